@@ -1,0 +1,497 @@
+#include "dem/simulation.hpp"
+
+#include <omp.h>
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <numeric>
+
+#include <fmt/format.h>
+
+#include "dem/contact_kernel.hpp"
+#include "dem/errors.hpp"
+
+namespace trapdem {
+
+namespace {
+constexpr std::int64_t kNone = std::numeric_limits<std::int64_t>::max();
+}
+
+Simulation::Simulation(Particles particles, const ContactLaw& particle_law, SimulationSettings settings)
+    : p_(std::move(particles)), law_(particle_law), settings_(settings) {
+  law_.validate("particle contact law");
+  constants_ = make_constants(law_);
+  set_gravity(Vec3{0.0, 0.0, -9.81});
+  for (int a = 0; a < 3; ++a) {
+    if (!(settings_.domain.upper[a] > settings_.domain.lower[a]))
+      throw InputError(fmt::format("domain: upper bound must exceed lower bound on axis {} (got {} .. {})", "xyz"[a],
+                                   settings_.domain.lower[a], settings_.domain.upper[a]));
+  }
+  if (settings_.skin > 0.0) {
+    skin_ = settings_.skin;
+  } else if (!p_.empty()) {
+    skin_ = 0.2 * 2.0 * std::accumulate(p_.radius.begin(), p_.radius.end(), 0.0) / double(p_.size());
+  } else {
+    throw InputError("simulation: the Verlet skin cannot be derived without particles; set settings.skin (m)");
+  }
+  if (settings_.time_step > 0.0) {
+    dt_ = settings_.time_step;
+  } else if (!p_.empty()) {
+    dt_ = settings_.time_step_fraction * critical_time_step();
+  } else {
+    throw InputError("simulation: the time step cannot be derived without particles; set settings.time_step (s)");
+  }
+}
+
+void Simulation::set_gravity(const Vec3& g) {
+  constant_gravity_ = g;
+  gravity_is_constant_ = true;
+  gravity_ = nullptr;
+}
+
+void Simulation::set_gravity(std::function<Vec3(double)> g) {
+  gravity_ = std::move(g);
+  gravity_is_constant_ = false;
+}
+
+Vec3 Simulation::gravity() const { return gravity_is_constant_ ? constant_gravity_ : gravity_(time_); }
+
+std::size_t Simulation::add_wall(Wall wall) {
+  wall.law.validate("wall '" + wall.name + "'");
+  wall_constants_.push_back(make_constants(wall.law));
+  walls_.push_back(std::move(wall));
+  invalidate_lists();
+  return walls_.size() - 1;
+}
+
+std::size_t Simulation::find_wall(const std::string& name) const {
+  for (std::size_t k = 0; k < walls_.size(); ++k)
+    if (walls_[k].name == name) return k;
+  throw InputError(fmt::format("no wall named '{}'", name));
+}
+
+void Simulation::add_particle(std::int64_t id, const Vec3& x, double radius, double density, const Vec3& v) {
+  if (!(radius > 0.0) || !(density > 0.0))
+    throw InputError(fmt::format("particle {}: radius ({} m) and density ({} kg/m3) must be positive", id, radius, density));
+  p_.add(id, x, radius, density, v);  // appending keeps the existing indices: the lists' history stays valid
+  invalidate_lists();
+}
+
+void Simulation::remove_particles(const std::vector<std::uint32_t>& indices) {
+  if (indices.empty()) return;
+  if (!history_pending_ && !pairs_.first.empty()) {
+    pending_history_.store_pairs(pairs_, p_.id);
+    pending_history_.store_walls(wall_list_, p_.id);
+    history_pending_ = true;
+  }
+  std::vector<char> drop(p_.size(), 0);
+  for (auto i : indices) drop.at(i) = 1;
+  std::vector<std::uint32_t> keep;
+  for (std::uint32_t i = 0; i < p_.size(); ++i)
+    if (!drop[i]) keep.push_back(i);
+  p_.permute(keep);
+  invalidate_lists();
+}
+
+double Simulation::critical_time_step() const {
+  if (p_.empty()) return std::numeric_limits<double>::infinity();
+  const double m_min = *std::min_element(p_.mass.begin(), p_.mass.end());
+  double k_max = law_.normal_stiffness;
+  for (const Wall& w : walls_) k_max = std::max(k_max, w.law.normal_stiffness);
+  return std::sqrt(m_min / k_max);
+}
+
+void Simulation::run(std::int64_t steps) {
+  for (std::int64_t s = 0; s < steps; ++s) step();
+}
+
+// One time step: velocity Verlet as LAMMPS's nve/sphere does it (half kick, drift, forces at the
+// new positions with the half-step velocities, half kick). Second order in dt for conservative
+// forces; the dashpot sees velocities half a step old, which is first order and standard in DEM.
+void Simulation::step() {
+  if (!setup_done_) {  // forces of the initial state, so the first half kick sees them
+    rebuild_lists();
+    particle_contacts();
+    wall_contacts();
+    setup_done_ = true;
+  }
+  integrate_positions();
+  update_neighbours_if_needed();
+  particle_contacts();
+  wall_contacts();
+  integrate_velocities();
+  ++stats_.steps;
+  check_stability();
+}
+
+void Simulation::integrate_positions() {
+  const double dt = dt_, half = 0.5 * dt_;
+  const Vec3 g = gravity();
+  const Domain& dom = settings_.domain;
+  const bool rotate = !settings_.freeze_rotation;
+  const std::size_t n = p_.size();
+  Vec3* x = p_.position.data();
+  Vec3* v = p_.velocity.data();
+  Vec3* w = p_.angular_velocity.data();
+  const Vec3* f = p_.force.data();
+  const Vec3* t = p_.torque.data();
+  const double* inv_m = p_.inv_mass.data();
+  const double* inv_i = p_.inv_inertia.data();
+  // Particles added since the last build have no reference position: the lists are invalid then
+  // and will be rebuilt anyway.
+  const bool track = lists_valid_ && position_at_build_.size() == n;
+  const Vec3* x0 = position_at_build_.data();
+  double max_d2 = 0.0;
+  std::int64_t escaped = kNone;
+#pragma omp parallel for schedule(static) reduction(max : max_d2) reduction(min : escaped)
+  for (std::size_t i = 0; i < n; ++i) {
+    v[i] += half * (f[i] * inv_m[i] + g);
+    x[i] += dt * v[i];
+    if (rotate) w[i] += (half * inv_i[i]) * t[i];
+    if (track) max_d2 = std::max(max_d2, norm2(x[i] - x0[i]));
+    for (int a = 0; a < 3; ++a) {
+      if (!dom.periodic[a] && !(x[i][a] >= dom.lower[a] && x[i][a] <= dom.upper[a]))
+        escaped = std::min<std::int64_t>(escaped, std::int64_t(i));
+    }
+  }
+  max_displacement2_ = max_d2;
+  escaped_particle_ = escaped == kNone ? -1 : escaped;
+
+  for (Wall& wall : walls_) {
+    wall.current_velocity = wall.velocity ? wall.velocity(time_ + half) : Vec3{};
+    wall.origin += dt * wall.current_velocity;
+    wall.displacement += dt * wall.current_velocity;
+  }
+  time_ += dt;
+}
+
+void Simulation::update_neighbours_if_needed() {
+  const double limit = 0.5 * skin_;
+  bool rebuild = !lists_valid_ || max_displacement2_ > limit * limit;
+  for (std::size_t k = 0; k < walls_.size() && !rebuild; ++k)
+    rebuild = norm2(walls_[k].displacement - wall_displacement_at_build_[k]) > limit * limit;
+  if (rebuild) rebuild_lists();
+}
+
+void Simulation::rebuild_lists() {
+  ++stats_.rebuilds;
+  // Wrap periodic axes into the domain, counting the images crossed.
+  const Domain& dom = settings_.domain;
+  if (dom.any_periodic()) {
+    for (std::size_t i = 0; i < p_.size(); ++i) {
+      for (int a = 0; a < 3; ++a) {
+        if (!dom.periodic[a]) continue;
+        const double len = dom.length(a);
+        double& xa = p_.position[i][a];
+        const double shift = std::floor((xa - dom.lower[a]) / len);
+        if (shift != 0.0) {
+          xa -= shift * len;
+          if (xa >= dom.upper[a]) xa = dom.lower[a];  // round-off at the upper bound
+          p_.image[i][a] += static_cast<std::int32_t>(shift);
+        }
+      }
+    }
+  }
+  HistoryArchive archive;
+  if (history_pending_) {
+    archive = std::move(pending_history_);
+    history_pending_ = false;
+  } else {
+    archive.store_pairs(pairs_, p_.id);
+    archive.store_walls(wall_list_, p_.id);
+  }
+
+  const double r_max = p_.empty() ? 0.0 : *std::max_element(p_.radius.begin(), p_.radius.end());
+  const double cell = 2.0 * r_max + skin_;
+  for (int a = 0; a < 3; ++a) {
+    if (dom.periodic[a] && dom.length(a) < 2.0 * cell)
+      throw InputError(fmt::format(
+          "periodic axis {}: the domain length {} m must be at least twice the interaction range {} m", "xyz"[a],
+          dom.length(a), cell));
+  }
+  CellSort cells = sort_into_cells(p_.position, dom, cell);
+  const bool reorder = settings_.reorder_every > 0 && rebuilds_since_reorder_ % settings_.reorder_every == 0;
+  ++rebuilds_since_reorder_;
+  if (reorder) {
+    p_.permute(cells.order);
+    cells = sort_into_cells(p_.position, dom, cell);
+  }
+  build_pairs(p_, cells, dom, skin_, pairs_);
+  archive.restore_pairs(pairs_, p_.id);
+  build_wall_candidates(p_, walls_, skin_, wall_list_);
+  archive.restore_walls(wall_list_, p_.id);
+
+  pair_force_on_partner_.assign(pairs_.size(), Vec3{});
+  pair_torque_on_partner_.assign(pairs_.size(), Vec3{});
+  position_at_build_ = p_.position;
+  wall_displacement_at_build_.resize(walls_.size());
+  for (std::size_t k = 0; k < walls_.size(); ++k) wall_displacement_at_build_[k] = walls_[k].displacement;
+  lists_valid_ = true;
+}
+
+// The pair kernel over the half list: each pair is computed once; the owner (first body) takes its
+// share at once, the partner's share is written per pair and gathered in wall_contacts().
+void Simulation::particle_contacts() {
+  const std::size_t n = p_.size();
+  const ContactConstants c = constants_;
+  const Domain dom = settings_.domain;
+  const bool periodic = dom.any_periodic();
+  const bool rolling = c.rolling != 0;
+  const double dt = dt_;
+  const Vec3* x = p_.position.data();
+  const Vec3* v = p_.velocity.data();
+  const Vec3* w = p_.angular_velocity.data();
+  const double* r = p_.radius.data();
+  const double* m = p_.mass.data();
+  const double* inv_i = p_.inv_inertia.data();
+  Vec3* f = p_.force.data();
+  Vec3* t = p_.torque.data();
+  const std::uint32_t* first = pairs_.first.data();
+  const std::uint32_t* partner = pairs_.partner.data();
+  ContactHistory* history = pairs_.history.data();
+  Vec3* f_partner = pair_force_on_partner_.data();
+  Vec3* t_partner = pair_torque_on_partner_.data();
+  double max_overlap = 0.0;
+#pragma omp parallel for schedule(static) reduction(max : max_overlap)
+  for (std::size_t i = 0; i < n; ++i) {
+    Vec3 fi{}, ti{};
+    const Vec3 xi = x[i];
+    const double ri = r[i];
+    for (std::uint32_t k = first[i]; k < first[i + 1]; ++k) {
+      const std::uint32_t j = partner[k];
+      Vec3 d = xi - x[j];
+      if (periodic) d = dom.minimum_image(d);
+      const double dist2 = norm2(d);
+      const double rj = r[j];
+      const double reach = ri + rj;
+      if (dist2 >= reach * reach) {
+        if (history[k].flags != 0) history[k].reset();
+        f_partner[k] = Vec3{};
+        t_partner[k] = Vec3{};
+        continue;
+      }
+      const double dist = std::sqrt(dist2);
+      const Vec3 normal = d / dist;
+      const double overlap = reach - dist;
+      max_overlap = std::max(max_overlap, overlap / std::min(ri, rj));
+      ContactBodies b;
+      b.effective_mass = m[i] * m[j] / (m[i] + m[j]);
+      b.arm_i = ri - 0.5 * overlap;
+      b.arm_j = rj - 0.5 * overlap;
+      b.lever = c.effective_lever_arm ? ri * rj / reach : 0.5 * reach;
+      if (rolling) {
+        const double ii = 1.0 / inv_i[i], ij = 1.0 / inv_i[j];
+        b.rolling_inertia = 1.0 / (1.0 / (ii + m[i] * ri * ri) + 1.0 / (ij + m[j] * rj * rj));
+        b.spin_inertia = 1.0 / (inv_i[i] + inv_i[j]);
+      } else {
+        b.rolling_inertia = b.spin_inertia = 0.0;
+      }
+      const ContactForce cf = contact_force(c, b, normal, overlap, v[i] - v[j], w[i], w[j], history[k], dt);
+      const Vec3 n_x_ft = cross(normal, cf.tangential);
+      fi += cf.force;
+      ti += cf.rolling_torque - b.arm_i * n_x_ft;
+      f_partner[k] = -cf.force;
+      t_partner[k] = -cf.rolling_torque - b.arm_j * n_x_ft;
+    }
+    f[i] = fi;
+    t[i] = ti;
+  }
+  max_overlap_seen_ = max_overlap;
+}
+
+// Completes each particle's force with its partner shares, then adds the walls. Each thread sums
+// the wall loads of its own particles; the threads' sums are added in thread order.
+void Simulation::wall_contacts() {
+  const std::size_t n = p_.size();
+  const std::size_t n_walls = walls_.size();
+  const double dt = dt_;
+  const Vec3* x = p_.position.data();
+  const Vec3* v = p_.velocity.data();
+  const Vec3* w = p_.angular_velocity.data();
+  const double* r = p_.radius.data();
+  const double* m = p_.mass.data();
+  const double* inv_i = p_.inv_inertia.data();
+  Vec3* f = p_.force.data();
+  Vec3* t = p_.torque.data();
+  const std::uint32_t* inc_first = pairs_.incident_first.data();
+  const std::uint32_t* inc_pair = pairs_.incident_pair.data();
+  const Vec3* f_partner = pair_force_on_partner_.data();
+  const Vec3* t_partner = pair_torque_on_partner_.data();
+  const std::uint32_t* wfirst = wall_list_.first.data();
+  const std::uint32_t* wall_of = wall_list_.wall.data();
+  ContactHistory* whist = wall_list_.history.data();
+  Vec3* wforce = wall_list_.force.data();
+  const Wall* walls = walls_.data();
+  const ContactConstants* wc = wall_constants_.data();
+
+  const int threads = omp_get_max_threads();
+  std::vector<Vec3> load(std::size_t(threads) * n_walls * 2, Vec3{});  // force, torque per thread and wall
+  double max_overlap = max_overlap_seen_;
+#pragma omp parallel reduction(max : max_overlap)
+  {
+    Vec3* my_load = load.data() + std::size_t(omp_get_thread_num()) * n_walls * 2;
+#pragma omp for schedule(static)
+    for (std::size_t i = 0; i < n; ++i) {
+      Vec3 fi = f[i], ti = t[i];
+      for (std::uint32_t q = inc_first[i]; q < inc_first[i + 1]; ++q) {
+        fi += f_partner[inc_pair[q]];
+        ti += t_partner[inc_pair[q]];
+      }
+      for (std::uint32_t k = wfirst[i]; k < wfirst[i + 1]; ++k) {
+        const Wall& wall = walls[wall_of[k]];
+        const WallProximity near = wall_proximity(wall, x[i]);
+        const double overlap = r[i] - near.distance;
+        if (overlap <= 0.0) {
+          if (whist[k].flags != 0) whist[k].reset();
+          wforce[k] = Vec3{};
+          continue;
+        }
+        max_overlap = std::max(max_overlap, overlap / r[i]);
+        ContactBodies b;
+        b.effective_mass = m[i];
+        b.arm_i = near.distance;
+        b.arm_j = 0.0;
+        b.lever = r[i];
+        const double inertia = 1.0 / inv_i[i];
+        b.rolling_inertia = inertia + m[i] * r[i] * r[i];
+        b.spin_inertia = inertia;
+        const ContactForce cf = contact_force(wc[wall_of[k]], b, near.normal, overlap, v[i] - wall.current_velocity,
+                                              w[i], Vec3{}, whist[k], dt);
+        fi += cf.force;
+        ti += cf.rolling_torque - b.arm_i * cross(near.normal, cf.tangential);
+        wforce[k] = cf.force;
+        const Vec3 contact_point = x[i] - b.arm_i * near.normal;
+        my_load[2 * wall_of[k]] -= cf.force;
+        my_load[2 * wall_of[k] + 1] -= cross(contact_point - wall.origin, cf.force);
+      }
+      f[i] = fi;
+      t[i] = ti;
+    }
+  }
+  max_overlap_seen_ = max_overlap;
+  for (std::size_t k = 0; k < n_walls; ++k) {
+    walls_[k].force = Vec3{};
+    walls_[k].torque = Vec3{};
+    for (int th = 0; th < threads; ++th) {
+      walls_[k].force += load[(std::size_t(th) * n_walls + k) * 2];
+      walls_[k].torque += load[(std::size_t(th) * n_walls + k) * 2 + 1];
+    }
+  }
+}
+
+void Simulation::integrate_velocities() {
+  const double half = 0.5 * dt_;
+  const Vec3 g = gravity();
+  const bool rotate = !settings_.freeze_rotation;
+  const std::size_t n = p_.size();
+  Vec3* v = p_.velocity.data();
+  Vec3* w = p_.angular_velocity.data();
+  const Vec3* f = p_.force.data();
+  const Vec3* t = p_.torque.data();
+  const double* inv_m = p_.inv_mass.data();
+  const double* inv_i = p_.inv_inertia.data();
+  std::int64_t bad = kNone;
+#pragma omp parallel for schedule(static) reduction(min : bad)
+  for (std::size_t i = 0; i < n; ++i) {
+    v[i] += half * (f[i] * inv_m[i] + g);
+    if (rotate) w[i] += (half * inv_i[i]) * t[i];
+    if (!is_finite(v[i]) || !is_finite(w[i])) bad = std::min<std::int64_t>(bad, std::int64_t(i));
+  }
+  bad_particle_ = bad == kNone ? -1 : bad;
+}
+
+std::string Simulation::describe_particle(std::uint32_t i) const {
+  const Vec3& x = p_.position[i];
+  const Vec3& v = p_.velocity[i];
+  return fmt::format("particle id {} (radius {:.4g} m) at ({:.6g}, {:.6g}, {:.6g}) m moving at ({:.4g}, {:.4g}, {:.4g}) m/s",
+                     p_.id[i], p_.radius[i], x.x, x.y, x.z, v.x, v.y, v.z);
+}
+
+void Simulation::check_stability() const {
+  const std::string when = fmt::format("step {} (t = {:.6g} s, dt = {:.4g} s, critical step {:.4g} s)", stats_.steps,
+                                       time_, dt_, critical_time_step());
+  if (bad_particle_ >= 0)
+    throw SimulationError(fmt::format(
+        "unstable run at {}: {} has a non-finite velocity (NaN or Inf). Likely cause: the time step is too large for "
+        "the stiffness, or an input value is not a number.",
+        when, describe_particle(static_cast<std::uint32_t>(bad_particle_))));
+  if (escaped_particle_ >= 0) {
+    const Domain& d = settings_.domain;
+    throw SimulationError(fmt::format(
+        "particle left the domain at {}: {} is outside [{:.6g}, {:.6g}] x [{:.6g}, {:.6g}] x [{:.6g}, {:.6g}] m. Likely "
+        "cause: a missing or too soft wall (it passed through), or an unstable time step.",
+        when, describe_particle(static_cast<std::uint32_t>(escaped_particle_)), d.lower.x, d.upper.x, d.lower.y,
+        d.upper.y, d.lower.z, d.upper.z));
+  }
+  if (max_overlap_seen_ > settings_.max_overlap_fraction) {
+    // Find the worst contact again (only on failure) to name it.
+    std::string where = "a particle-wall contact";
+    double worst = 0.0;
+    const Domain& dom = settings_.domain;
+    for (std::uint32_t i = 0; i + 1 < pairs_.first.size(); ++i) {
+      for (std::uint32_t k = pairs_.first[i]; k < pairs_.first[i + 1]; ++k) {
+        const std::uint32_t j = pairs_.partner[k];
+        const double ov = p_.radius[i] + p_.radius[j] - norm(dom.minimum_image(p_.position[i] - p_.position[j]));
+        const double frac = ov / std::min(p_.radius[i], p_.radius[j]);
+        if (frac > worst) {
+          worst = frac;
+          where = fmt::format("the contact of particle ids {} and {}", p_.id[i], p_.id[j]);
+        }
+      }
+    }
+    throw SimulationError(fmt::format(
+        "overlap blow-up at {}: {} overlaps by {:.1f}% of the smaller radius (limit {:.1f}%). Likely cause: the normal "
+        "stiffness ({:.4g} N/m) is too low for the load (raise it, or lower gravity), or the time step is too large.",
+        when, where, 100.0 * max_overlap_seen_, 100.0 * settings_.max_overlap_fraction, law_.normal_stiffness));
+  }
+}
+
+Simulation::ListState Simulation::list_state() const {
+  return {pairs_, wall_list_, position_at_build_, wall_displacement_at_build_, rebuilds_since_reorder_};
+}
+
+void Simulation::restore(double time, const SimulationStats& stats, ListState lists) {
+  time_ = time;
+  stats_ = stats;
+  pairs_ = std::move(lists.pairs);
+  wall_list_ = std::move(lists.walls);
+  position_at_build_ = std::move(lists.position_at_build);
+  wall_displacement_at_build_ = std::move(lists.wall_displacement_at_build);
+  rebuilds_since_reorder_ = lists.rebuilds_since_reorder;
+  pair_force_on_partner_.assign(pairs_.size(), Vec3{});
+  pair_torque_on_partner_.assign(pairs_.size(), Vec3{});
+  history_pending_ = false;
+  lists_valid_ = true;
+  setup_done_ = true;
+}
+
+double Simulation::translational_kinetic_energy() const {
+  double e = 0.0;
+  for (std::size_t i = 0; i < p_.size(); ++i) e += 0.5 * p_.mass[i] * norm2(p_.velocity[i]);
+  return e;
+}
+
+double Simulation::rotational_kinetic_energy() const {
+  double e = 0.0;
+  for (std::size_t i = 0; i < p_.size(); ++i) e += 0.5 / p_.inv_inertia[i] * norm2(p_.angular_velocity[i]);
+  return e;
+}
+
+double Simulation::potential_energy(double reference_height) const {
+  const Vec3 g = gravity();
+  const double g_len = norm(g);
+  if (g_len == 0.0) return 0.0;
+  const Vec3 up = -g / g_len;
+  double e = 0.0;
+  for (std::size_t i = 0; i < p_.size(); ++i) e += p_.mass[i] * g_len * (dot(p_.position[i], up) - reference_height);
+  return e;
+}
+
+std::size_t Simulation::contact_count() const {
+  std::size_t c = 0;
+  for (const ContactHistory& h : pairs_.history) c += h.touching() ? 1 : 0;
+  return c;
+}
+
+}  // namespace trapdem
