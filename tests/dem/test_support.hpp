@@ -1,0 +1,64 @@
+#pragma once
+// Small helpers shared by the engine's analytic tests (tests/dem/*_test.cpp).
+#include <cmath>
+#include <cstdint>
+#include <cstdlib>
+#include <numbers>
+
+#include <fmt/format.h>
+
+#include "dem/simulation.hpp"
+
+namespace trapdem::testing_support {
+
+// Prints a measured error next to its tolerance when TRAPDEM_TEST_REPORT is set in the
+// environment (for reviewing how much margin each check has); silent otherwise.
+template <class... Args>
+void report(fmt::format_string<Args...> format, Args&&... args) {
+  if (std::getenv("TRAPDEM_TEST_REPORT")) fmt::print("    [report] {}\n", fmt::format(format, std::forward<Args>(args)...));
+}
+
+// A bounded box [-half, half]^3 (m) with no periodic axis.
+inline Domain box(double half) {
+  Domain d;
+  d.lower = {-half, -half, -half};
+  d.upper = {half, half, half};
+  return d;
+}
+
+inline double sphere_mass(double radius, double density) {
+  return density * 4.0 / 3.0 * std::numbers::pi * radius * radius * radius;
+}
+
+// A linear spring-dashpot law with the given restitution; friction and rolling off unless set later.
+inline ContactLaw frictionless_law(double kn, double restitution) {
+  ContactLaw law;
+  law.normal_stiffness = kn;
+  law.tangential_stiffness = 0.5 * kn;
+  law.restitution = restitution;
+  law.static_friction = 0.0;
+  law.kinetic_friction = 0.0;
+  law.rolling_friction = 0.0;
+  law.rolling_model = RollingModel::none;
+  return law;
+}
+
+// Deterministic pseudo-random numbers (splitmix64) so that tests do not depend on a library's
+// distribution implementation.
+class Rng {
+ public:
+  explicit Rng(std::uint64_t seed) : state_(seed) {}
+  std::uint64_t next() {
+    std::uint64_t z = (state_ += 0x9e3779b97f4a7c15ull);
+    z = (z ^ (z >> 30)) * 0xbf58476d1ce4e5b9ull;
+    z = (z ^ (z >> 27)) * 0x94d049bb133111ebull;
+    return z ^ (z >> 31);
+  }
+  double uniform() { return double(next() >> 11) * (1.0 / 9007199254740992.0); }  // [0, 1)
+  double uniform(double lo, double hi) { return lo + (hi - lo) * uniform(); }
+
+ private:
+  std::uint64_t state_;
+};
+
+}  // namespace trapdem::testing_support
