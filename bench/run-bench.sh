@@ -1,0 +1,32 @@
+#!/bin/bash
+# The standard benchmark, trapdem side: the peers' settled beds (N = 19928 and 80560), 1 and 2
+# OpenMP threads, REPS repetitions each; prints the median line per case:
+#   trapdem N=19928 threads=1 Mpsteps/s=12.34
+# Usage: bash bench/run-bench.sh [BUILD]     (make bench)
+# Env: REPS (3), STEPS_S (5000, N~20k), STEPS_L (1250, N~80k), WARMUP (300), THREADS ("1 2"),
+#      SIZES ("0.1 0.4"), BENCH_DATA (packing cache, default BUILD/bench-data), PEERS.
+source "$(dirname "$0")/common.sh"
+REPS=${REPS:-3}
+WARMUP=${WARMUP:-300}
+THREADS=${THREADS:-"1 2"}
+export OMP_PROC_BIND=${OMP_PROC_BIND:-true}   # pin threads like mpirun pins ranks
+EXE="$BUILD/bench/standard"
+[ -x "$EXE" ] || { echo "bench: $EXE not found; build it: cmake --build $BUILD --target standard" >&2; exit 1; }
+make_packings
+OUT="$DATA/trapdem_runs.txt"
+: > "$OUT"
+for W in $SIZES; do
+  NS=$(steps_for $W)
+  for T in $THREADS; do
+    runs=()
+    for rep in $(seq 1 $REPS); do
+      if ! res=$("$EXE" --data "$DATA/pack_W$W.data" --width $W --steps $NS --threads $T --warmup $WARMUP); then
+        echo "bench: trapdem failed (W=$W threads=$T rep=$rep)" >&2; exit 1
+      fi
+      echo "$res" | sed "s/^/W=$W rep=$rep: /" >> "$OUT"
+      runs+=("$(echo "$res" | tr '\n' '\t')")
+    done
+    # Median by Mpsteps/s; print its two lines.
+    printf '%s\n' "${runs[@]}" | sort -t= -k4 -g | sed -n "$(( (REPS + 1) / 2 ))p" | tr '\t' '\n' | sed '/^$/d'
+  done
+done

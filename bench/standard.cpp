@@ -1,0 +1,140 @@
+// The standard benchmark (the peers' problem, /work/shared/peers/README.md): a settled bed of
+// 2 mm spheres in a W x 0.0182 x 0.2 m box under 50 g, read from the LAMMPS packing, run with
+// the LIGGGHTS-equivalent contact law (hooke/stiffness, tangential history, rolling epsd2).
+//
+// Usage: standard --data pack_W0.1.data --width 0.1 --steps 5000 --threads 1 --warmup 300
+// Prints one line "trapdem N=19928 threads=1 Mpsteps/s=12.34" and a '#' line with the run's
+// sanity figures (contacts per particle, rebuilds, max overlap, kinetic energy).
+#include <omp.h>
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <cstdio>
+#include <cstdlib>
+#include <exception>
+#include <string>
+
+#include "dem/errors.hpp"
+#include "dem/simulation.hpp"
+#include "io/lammps_data.hpp"
+
+using namespace trapdem;
+
+namespace {
+
+struct Options {
+  std::string data;
+  double width = 0.0;
+  long steps = 5000;
+  int threads = 1;
+  long warmup = 300;
+};
+
+[[noreturn]] void usage(const char* prog, const std::string& why) {
+  std::fprintf(stderr,
+               "%s: %s\nusage: %s --data FILE --width W [--steps N] [--threads T] [--warmup K]\n"
+               "  FILE  LAMMPS data file (atom_style sphere) of the settled packing\n"
+               "  W     box width in m (0.1 -> N=19928, 0.4 -> N=80560)\n",
+               prog, why.c_str(), prog);
+  std::exit(2);
+}
+
+Options parse(int argc, char** argv) {
+  Options o;
+  for (int k = 1; k < argc; ++k) {
+    const std::string a = argv[k];
+    if (a == "-h" || a == "--help") usage(argv[0], "help");
+    if (k + 1 >= argc) usage(argv[0], "option " + a + " needs a value");
+    const std::string v = argv[++k];
+    char* end = nullptr;
+    auto num = [&](double lo) {
+      const double x = std::strtod(v.c_str(), &end);
+      if (end == v.c_str() || *end != '\0' || !(x >= lo)) usage(argv[0], a + " " + v + ": expected a number >= " + std::to_string(lo));
+      return x;
+    };
+    if (a == "--data") o.data = v;
+    else if (a == "--width") o.width = num(1e-6);
+    else if (a == "--steps") o.steps = static_cast<long>(num(1));
+    else if (a == "--threads") o.threads = static_cast<int>(num(1));
+    else if (a == "--warmup") o.warmup = static_cast<long>(num(0));
+    else usage(argv[0], "unknown option " + a);
+  }
+  if (o.data.empty()) usage(argv[0], "--data is required");
+  if (o.width <= 0.0) usage(argv[0], "--width is required");
+  return o;
+}
+
+int run(const Options& o) {
+  constexpr double kDepth = 0.0182, kHeight = 0.2;
+  omp_set_num_threads(o.threads);
+
+  LammpsData data = read_lammps_data(o.data);
+  if (std::fabs(data.box_upper.x - o.width) > 1e-9 || std::fabs(data.box_lower.x) > 1e-9)
+    throw InputError(o.data + ": box x = [" + std::to_string(data.box_lower.x) + ", " + std::to_string(data.box_upper.x) +
+                     "] does not match --width " + std::to_string(o.width));
+  const std::size_t n = data.particles.size();
+
+  ContactLaw law;
+  law.normal_stiffness = 1.0e6;
+  law.tangential_stiffness = 5.0e5;
+  law.restitution = 0.9;
+  law.static_friction = 0.5;
+  law.kinetic_friction = 0.5;
+  law.rolling_friction = 0.2;
+  law.rolling_model = RollingModel::elastic_plastic;
+  law.rolling_stiffness = RollingStiffness::tangential;
+  law.lever_arm = RollingLeverArm::effective_radius;
+  law.rolling_damping = 0.0;  // LIGGGHTS epsd2: no rolling dashpot
+
+  SimulationSettings s;
+  s.time_step = 6.472e-7;
+  s.skin = 4.0e-4;
+  s.domain.lower = {0.0, 0.0, 0.0};
+  s.domain.upper = {o.width, kDepth, kHeight};
+
+  Simulation sim(std::move(data.particles), law, s);
+  sim.set_gravity(Vec3{0.0, 0.0, -50.0 * 9.81});
+  sim.add_wall(Wall::plane("x0", {0, 0, 0}, {1, 0, 0}, law));
+  sim.add_wall(Wall::plane("x1", {o.width, 0, 0}, {-1, 0, 0}, law));
+  sim.add_wall(Wall::plane("y0", {0, 0, 0}, {0, 1, 0}, law));
+  sim.add_wall(Wall::plane("y1", {0, kDepth, 0}, {0, -1, 0}, law));
+  sim.add_wall(Wall::plane("z0", {0, 0, 0}, {0, 0, 1}, law));
+
+  sim.run(o.warmup);
+  const std::int64_t rebuilds0 = sim.stats().rebuilds;
+  const double ke0 = sim.kinetic_energy();
+  double max_overlap = 0.0;
+
+  const auto t0 = std::chrono::steady_clock::now();
+  for (long k = 0; k < o.steps; ++k) {
+    sim.step();
+    max_overlap = std::max(max_overlap, sim.max_overlap_fraction());
+  }
+  const auto t1 = std::chrono::steady_clock::now();
+
+  const double seconds = std::chrono::duration<double>(t1 - t0).count();
+  const double rate = double(n) * double(o.steps) / seconds / 1e6;
+  const double contacts_per_particle = 2.0 * double(sim.contact_count()) / double(n);
+  std::printf("trapdem N=%zu threads=%d Mpsteps/s=%.3f\n", n, o.threads, rate);
+  std::printf("# loop_s=%.3f steps=%ld warmup=%ld contacts/particle=%.4f rebuilds=%lld max_overlap=%.3f%% "
+              "ke_start=%.4g J ke_end=%.4g J\n",
+              seconds, o.steps, o.warmup, contacts_per_particle,
+              static_cast<long long>(sim.stats().rebuilds - rebuilds0), 100.0 * max_overlap, ke0, sim.kinetic_energy());
+  if (!std::isfinite(rate) || contacts_per_particle < 1.0)
+    throw SimulationError("implausible run: contacts per particle " + std::to_string(contacts_per_particle) +
+                          " (a settled bed has ~3.6); is the data file a settled packing?");
+  return 0;
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  const Options o = parse(argc, argv);
+  try {
+    return run(o);
+  } catch (const std::exception& e) {
+    std::fprintf(stderr, "standard: error: %s\n", e.what());
+    return 1;
+  }
+}
