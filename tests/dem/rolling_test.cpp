@@ -1,0 +1,140 @@
+// Rolling resistance: a sphere rolling on a floor wall under the constant torque model (type A),
+// and a sphere on a slope under the elastic-plastic spring-dashpot model (type C, EPSD).
+// At a wall the lever arm is the particle radius r, so the limiting torque is M = mu_r r |F_n|.
+#include <gtest/gtest.h>
+
+#include <cmath>
+
+#include "dem/simulation.hpp"
+#include "test_support.hpp"
+
+using namespace trapdem;
+using namespace trapdem::testing_support;
+
+namespace {
+
+constexpr double kG = 9.81;
+constexpr double kRadius = 0.001;
+constexpr double kDensity = 2500.0;
+constexpr double kStiffness = 1.0e4;  // N/m: static overlap m g / k_n ~ 1e-8 m = 1e-5 r
+
+ContactLaw rolling_law(RollingModel model, double mu_r) {
+  ContactLaw law = frictionless_law(kStiffness, 0.5);
+  law.static_friction = 1.0;  // high: the sphere rolls, it never slides
+  law.kinetic_friction = 1.0;
+  law.rolling_friction = mu_r;
+  law.rolling_model = model;
+  return law;
+}
+
+Simulation sphere_on_floor(const ContactLaw& law, const Vec3& velocity, const Vec3& spin) {
+  const double m = sphere_mass(kRadius, kDensity);
+  Particles p;
+  p.add(1, {0, 0, kRadius - m * kG / kStiffness}, kRadius, kDensity, velocity, spin);
+  SimulationSettings s;
+  s.domain = box(0.2);
+  s.time_step_fraction = 0.1;
+  Simulation sim(std::move(p), law, s);
+  sim.add_wall(Wall::plane("floor", {0, 0, 0}, {0, 0, 1}, law));
+  return sim;
+}
+
+}  // namespace
+
+// Energy balance: the kinetic energy of pure rolling, (1/2) m v0^2 (1 + 2/5) = 0.7 m v0^2, is
+// spent by the torque mu_r r m g over the angle s / r: s = 0.7 v0^2 / (mu_r g). (Equivalently
+// the deceleration is mu_r g / 1.4.)
+//
+// Tolerance 1e-3 relative: the lever arm the kernel uses for the friction torque is the centre-
+// to-contact distance r - delta (delta / r ~ 1e-5), the tangential spring stores a shift of
+// F_t / k_t ~ 1e-9 m, and the last step before rest is cut short by the torque bound
+// I w / dt (at most v0 dt ~ 1e-7 m, 1e-4 of s). A lever arm of r/2 or the effective radius
+// would double s; a missing rotational term would change 0.7 to 0.5.
+TEST(Rolling, ConstantTorqueStopsAtEnergyBalanceDistanceAndStaysAtRest) {
+  for (const double mu_r : {0.1, 0.3}) {
+    const double v0 = 0.05;
+    Simulation sim = sphere_on_floor(rolling_law(RollingModel::constant_torque, mu_r), {v0, 0, 0},
+                                     {0, v0 / kRadius, 0});
+    const double expected = 0.7 * v0 * v0 / (mu_r * kG);
+    const double t_stop = v0 / (mu_r * kG / 1.4);
+    const std::int64_t steps = std::llround(1.1 * t_stop / sim.time_step());
+    sim.run(steps);
+    const double s = sim.particles().position[0].x;
+    report("constant torque mu_r={}: s = {:.6e} m vs 0.7 v0^2/(mu_r g) = {:.6e} m, rel. error {:.1e} (tol 1e-3)", mu_r,
+           s, expected, std::fabs(s / expected - 1.0));
+    EXPECT_NEAR(s, expected, 1e-3 * expected) << "mu_r = " << mu_r;
+
+    // At rest it stays at rest: the torque is bounded by what stops the rolling in one step, so it
+    // does not flip sign every step (chatter). Over another 20 ms (~6000 steps) the sphere must
+    // not drift and its spin must stay at round-off level. A chattering torque mu_r r m g would
+    // give |w| ~ mu_r r m g dt / I ~ 0.2 rad/s and drift of v dt per step.
+    const double x_rest = sim.particles().position[0].x;
+    double max_spin = 0.0, max_speed = 0.0;
+    for (int k = 0; k < 6000; ++k) {
+      sim.step();
+      max_spin = std::max(max_spin, norm(sim.particles().angular_velocity[0]));
+      max_speed = std::max(max_speed, norm(sim.particles().velocity[0]));
+    }
+    const double drift = std::fabs(sim.particles().position[0].x - x_rest);
+    report("  at rest: max |w| {:.1e} rad/s (tol 1e-6), max |v| {:.1e} m/s (tol 1e-9), drift {:.1e} m (tol 1e-9)",
+           max_spin, max_speed, drift);
+    EXPECT_LT(max_spin, 1e-6);   // rad/s; r |w| = 1e-9 m/s
+    EXPECT_LT(max_speed, 1e-9);  // m/s
+    EXPECT_LT(drift, 1e-9);      // m, 1e-6 of r
+  }
+}
+
+namespace {
+
+struct SlopeRun {
+  double shift;         // m, down-slope displacement at the end
+  double speed;         // m/s at the end
+  double acceleration;  // m/s^2 over the last 20 ms
+};
+
+// Gravity tilts towards +x from 0 to atan(slope) over 10 ms (quasi-static loading of the rolling
+// and tangential springs), then holds for 30 ms.
+SlopeRun sphere_on_slope(double slope, double mu_r) {
+  Simulation sim = sphere_on_floor(rolling_law(RollingModel::elastic_plastic, mu_r), {}, {});
+  const double angle = std::atan(slope), ramp = 0.01;
+  sim.set_gravity([=](double t) {
+    const double a = angle * std::min(1.0, t / ramp);
+    return Vec3{kG * std::sin(a), 0.0, -kG * std::cos(a)};
+  });
+  const double dt = sim.time_step();
+  sim.run(std::llround(0.02 / dt));
+  const double t1 = sim.time(), v1 = sim.particles().velocity[0].x;
+  sim.run(std::llround(0.02 / dt));
+  const double t2 = sim.time(), v2 = sim.particles().velocity[0].x;
+  return {sim.particles().position[0].x, norm(sim.particles().velocity[0]), (v2 - v1) / (t2 - t1)};
+}
+
+}  // namespace
+
+// Statics of a sphere on a slope: friction F = m g sin holds it, and its moment r F about the
+// centre must be balanced by the rolling torque, at most mu_r r m g cos: at rest while
+// tan(angle) < mu_r. Beyond, the torque is fully mobilised (no dashpot, Ai et al. eq. 18) and the
+// sphere rolls with a = g (sin - mu_r cos) / 1.4.
+TEST(Rolling, ElasticPlasticRestsOnSlopeBelowRollingLimit) {
+  const double mu_r = 0.2;
+  const SlopeRun r = sphere_on_slope(0.5 * mu_r, mu_r);
+  // At rest, the sphere has turned on its rolling spring by M / k_r with k_r = 2.25 k_n mu_r^2 r^2,
+  // which moves the centre by r M / k_r ~ 1e-8 m; allow 1e-7 m. Rolling for 30 ms would move it
+  // ~1 mm.
+  report("EPSD tan = mu_r/2: shift {:.2e} m (tol 1e-7), speed {:.1e} m/s (tol 1e-7)", r.shift, r.speed);
+  EXPECT_LT(std::fabs(r.shift), 1e-7);
+  EXPECT_LT(r.speed, 1e-7);  // m/s: the EPSD dashpot has damped the rolling oscillation
+}
+
+TEST(Rolling, ElasticPlasticRollsAwayAboveRollingLimit) {
+  const double mu_r = 0.2, slope = 1.5 * mu_r;
+  const SlopeRun r = sphere_on_slope(slope, mu_r);
+  const double angle = std::atan(slope);
+  const double a = kG * (std::sin(angle) - mu_r * std::cos(angle)) / 1.4;
+  // Fully mobilised torque mu_r r |F_n| with |F_n| = m g cos up to a decayed oscillation; the
+  // friction torque uses the arm r - delta (1e-5 relative): 1e-4 relative tolerance.
+  report("EPSD tan = 1.5 mu_r: acceleration {:.6f} vs g(sin - mu_r cos)/1.4 = {:.6f}, rel. error {:.1e} (tol 1e-4)",
+         r.acceleration, a, std::fabs(r.acceleration / a - 1.0));
+  EXPECT_GT(r.shift, 1e-4);
+  EXPECT_NEAR(r.acceleration, a, 1e-4 * a);
+}
