@@ -41,7 +41,7 @@ TEST(StaticLoad, BedInBoxOfWallsCarriesItsWeight) {
   for (const Wall& w : sim.walls()) total += w.force;
   const double floor_share = -sim.walls()[0].force.z / weight;
   // Tolerance 0.1 % of the weight (the brief's criterion): at rest the walls' reaction equals the
-  // weight exactly; what remains is the bed's residual acceleration sum m a, measured ~1e-6 W
+  // weight exactly; what remains is the bed's residual acceleration sum m a, measured ~1e-8 W
   // after 0.25 s. A sign error in the wall load, or a missing wall's share, is O(W).
   report("bed: |sum F_z + W| / W = {:.1e} (tol 1e-3), |sum F_xy| / W = {:.1e} (tol 1e-3), floor carries {:.3f} W, "
          "KE {:.1e} J",
