@@ -73,7 +73,7 @@ double refined_peak_position(const HorizontalProfile& p, std::size_t peak) {
   return p.x[peak] + offset * (p.x[1] - p.x[0]);
 }
 
-double full_width_at_half_maximum(const HorizontalProfile& p, std::size_t peak, double max_half_width) {
+HalfMaximumCrossings half_maximum_crossings(const HorizontalProfile& p, std::size_t peak, double max_half_width) {
   const double nan = std::numeric_limits<double>::quiet_NaN();
   const double half = 0.5 * p.value[peak];
   const auto crossing = [&](int direction) {
@@ -90,8 +90,11 @@ double full_width_at_half_maximum(const HorizontalProfile& p, std::size_t peak, 
       k = j;
     }
   };
-  const double left = crossing(-1), right = crossing(+1);
-  return right - left;  // NaN if either side is NaN
+  return {crossing(-1), crossing(+1)};
+}
+
+double full_width_at_half_maximum(const HorizontalProfile& p, std::size_t peak, double max_half_width) {
+  return half_maximum_crossings(p, peak, max_half_width).width();  // NaN if either side is NaN
 }
 
 }  // namespace trapdem

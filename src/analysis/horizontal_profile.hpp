@@ -43,9 +43,20 @@ std::size_t index_of_maximum(const HorizontalProfile& profile, double x_low, dou
 // (within half a spacing of the sample).
 double refined_peak_position(const HorizontalProfile& profile, std::size_t peak);
 
-// Full width at half maximum around sample `peak`: from the crossing of value = peak value / 2 on
-// the left to the one on the right, each interpolated linearly between samples. NaN if a side
-// does not drop to half within max_half_width of the peak or meets a NaN first.
+struct HalfMaximumCrossings {
+  double left = 0.0;   // m, x where the profile first drops to half the peak value, going left
+  double right = 0.0;  // m, the same going right
+  double width() const { return right - left; }            // full width at half maximum
+  double centre() const { return 0.5 * (left + right); }   // mid-point, a robust band centre
+};
+
+// Crossings of value = peak value / 2 left and right of sample `peak`, each interpolated linearly
+// between samples. A side is NaN if it does not drop to half within max_half_width of the peak
+// or meets a NaN first.
+HalfMaximumCrossings half_maximum_crossings(const HorizontalProfile& profile, std::size_t peak,
+                                            double max_half_width);
+
+// Full width at half maximum around sample `peak` (NaN if a crossing is not found).
 double full_width_at_half_maximum(const HorizontalProfile& profile, std::size_t peak, double max_half_width);
 
 }  // namespace trapdem

@@ -104,8 +104,12 @@ ShearBand trace_shear_band(const TriangleField& gamma_max, const TrapdoorGeometr
                     trapdoor.base_z;
       break;
     }
-    BandTracePoint point{z, refined_peak_position(profile, peak), value,
-                         full_width_at_half_maximum(profile, peak, max_half_width)};
+    // Band centre: mid-point of the half-maximum crossings, read where the profile is steepest,
+    // so less sensitive to particle-scale noise than the maximum itself; the refined maximum if a
+    // crossing is missing.
+    const HalfMaximumCrossings half = half_maximum_crossings(profile, peak, max_half_width);
+    const double centre = std::isfinite(half.width()) ? half.centre() : refined_peak_position(profile, peak);
+    BandTracePoint point{z, centre, value, half.width()};
     band.trace.push_back(point);
     band.height_reached = z - trapdoor.base_z;
     x_previous = point.x;

@@ -31,7 +31,7 @@ struct ShearBandSettings {
 
 struct BandTracePoint {
   double z = 0.0;                 // m, slab centre
-  double x = 0.0;                 // m, ridge position (strain maximum)
+  double x = 0.0;                 // m, band centre: mid-point of the half-maximum crossings
   double peak = 0.0;              // gamma_max at the ridge (smoothed)
   double horizontal_width = 0.0;  // m, full width at half the ridge value along x (NaN if not found)
 };

@@ -11,7 +11,7 @@ using namespace trapdem;
 using test::report;
 
 namespace {
-constexpr double round_off = 1e-11;  // as in cst_strain_test.cpp: CST round-off on a 2 mm packing
+constexpr double round_off = 1e-12;  // as in cst_strain_test.cpp: CST round-off on a 2 mm packing
 
 std::vector<Point2> moved(const std::vector<Point2>& nodes, const std::function<Point2(Point2)>& map) {
   std::vector<Point2> out(nodes.size());
