@@ -425,8 +425,11 @@ void Simulation::check_stability() const {
         d.upper.y, d.lower.z, d.upper.z));
   }
   if (max_overlap_seen_ > settings_.max_overlap_fraction) {
-    // Find the worst contact again (only on failure) to name it.
+    // Find the worst contact again (only on failure) to name it and the stiffness that governs it:
+    // the particle law's for a pair, the wall's own law for a particle-wall contact.
     std::string where = "a particle-wall contact";
+    std::string stiffness_of = "particle";
+    double stiffness = law_.normal_stiffness;
     double worst = 0.0;
     const Domain& dom = settings_.domain;
     for (std::uint32_t i = 0; i + 1 < pairs_.first.size(); ++i) {
@@ -440,10 +443,32 @@ void Simulation::check_stability() const {
         }
       }
     }
+    for (std::uint32_t i = 0; i + 1 < wall_list_.first.size(); ++i) {
+      for (std::uint32_t k = wall_list_.first[i]; k < wall_list_.first[i + 1]; ++k) {
+        const Wall& w = walls_[wall_list_.wall[k]];
+        const double frac = (p_.radius[i] - wall_proximity(w, p_.position[i]).distance) / p_.radius[i];
+        if (frac > worst) {
+          worst = frac;
+          where = fmt::format("the contact of particle id {} with wall '{}'", p_.id[i], w.name);
+          stiffness_of = fmt::format("wall '{}'", w.name);
+          stiffness = w.law.normal_stiffness;
+        }
+      }
+    }
+    // Above the central-difference limit 2 sqrt(m/k) the integration itself is unstable: advising a
+    // stiffer contact would make it worse.
+    const double limit = 2.0 * critical_time_step();
+    const std::string cause =
+        dt_ > limit
+            ? fmt::format("the time step ({:.4g} s) exceeds the stability limit 2 sqrt(m_min / k_max) = {:.4g} s: "
+                          "lower settings.time_step (or time_step_fraction; 0.1-0.2 is usual)",
+                          dt_, limit)
+            : fmt::format("the normal stiffness of the {} contact law ({:.4g} N/m) is too low for the load (raise "
+                          "it, or lower gravity), or the time step is too large",
+                          stiffness_of, stiffness);
     throw SimulationError(fmt::format(
-        "overlap blow-up at {}: {} overlaps by {:.1f}% of the smaller radius (limit {:.1f}%). Likely cause: the normal "
-        "stiffness ({:.4g} N/m) is too low for the load (raise it, or lower gravity), or the time step is too large.",
-        when, where, 100.0 * max_overlap_seen_, 100.0 * settings_.max_overlap_fraction, law_.normal_stiffness));
+        "overlap blow-up at {}: {} overlaps by {:.1f}% of the smaller radius (limit {:.1f}%). Likely cause: {}.", when,
+        where, 100.0 * max_overlap_seen_, 100.0 * settings_.max_overlap_fraction, cause));
   }
 }
 
