@@ -56,7 +56,7 @@ class Simulation {
   const ContactLaw& particle_law() const { return law_; }
   const SimulationSettings& settings() const { return settings_; }
   const PairList& pairs() const { return pairs_; }
-  const WallList& wall_contacts() const { return wall_list_; }
+  const WallList& wall_candidates() const { return wall_list_; }
   const SimulationStats& stats() const { return stats_; }
   double time() const { return time_; }
   std::int64_t step_count() const { return stats_.steps; }

@@ -58,7 +58,7 @@ Outcome run_pyramid(double skin, int reorder_every) {
   }
   out.rebuilds = sim.stats().rebuilds;
   // std::as_const: on a non-const Simulation the name resolves to the private step kernel.
-  for (const ContactHistory& hist : std::as_const(sim).wall_contacts().history) out.sliding_wall_contacts += hist.sliding();
+  for (const ContactHistory& hist : sim.wall_candidates().history) out.sliding_wall_contacts += hist.sliding();
   out.touching_pairs = sim.contact_count();
   return out;
 }
