@@ -1,0 +1,118 @@
+#include "piv/image_pair.hpp"
+
+#include <queue>
+#ifdef _OPENMP
+#include <omp.h>
+#endif
+#include <utility>
+
+#include "piv/integer_search.hpp"
+
+namespace trapdem {
+
+namespace {
+
+int thread_count(const PivSettings& s) {
+#ifdef _OPENMP
+  return s.threads > 0 ? s.threads : omp_get_max_threads();
+#else
+  return 1;
+#endif
+}
+
+// Converged beats not converged; then the higher ZNCC.
+bool better(const IcgnResult& a, const IcgnResult& b) {
+  const bool ca = a.outcome == IcgnOutcome::converged, cb = b.outcome == IcgnOutcome::converged;
+  if (ca != cb) return ca;
+  return a.zncc > b.zncc;
+}
+
+void keep_better(PairSolution& s, const IcgnResult& r) {
+  if (!s.attempted || better(r, s.best)) s.best = r;
+  s.attempted = true;
+}
+
+bool is_seed_candidate(const SubsetGrid& grid, std::size_t i, int spacing) {
+  const int sp = spacing > 0 ? spacing : 1;
+  // Offset by half a spacing so that a small grid still has a candidate near its middle.
+  return (grid.column_of(i) + sp / 2) % sp == 0 && (grid.row_of(i) + sp / 2) % sp == 0;
+}
+
+}  // namespace
+
+bool is_accepted(const PairSolution& s, bool textured, double min_valid_zncc) {
+  return textured && s.attempted && s.best.outcome == IcgnOutcome::converged && s.best.zncc >= min_valid_zncc;
+}
+
+ReferenceSubsets make_reference_subsets(const PreparedImage& reference, const std::vector<cv::Point2d>& centres,
+                                        const std::vector<bool>& alive, int subset_size,
+                                        const TextureCriteria& criteria) {
+  const std::ptrdiff_t n = static_cast<std::ptrdiff_t>(centres.size());
+  ReferenceSubsets out;
+  out.subset.resize(centres.size());
+  std::vector<char> textured(centres.size(), 0);
+#pragma omp parallel for schedule(static)
+  for (std::ptrdiff_t i = 0; i < n; ++i) {
+    if (!alive[i]) continue;
+    out.subset[i] = make_reference_subset(reference.spline, centres[i], subset_size);
+    textured[i] = out.subset[i] && has_enough_texture(*out.subset[i], criteria);
+  }
+  out.textured.assign(textured.begin(), textured.end());
+  return out;
+}
+
+std::vector<PairSolution> solve_image_pair(const SubsetGrid& grid, const ReferenceSubsets& refs,
+                                           const PreparedImage& reference, const PreparedImage& current,
+                                           const std::vector<std::optional<WarpParameters>>& start,
+                                           const std::vector<cv::Point2d>& prediction, const PivSettings& settings) {
+  const std::size_t n = grid.size();
+  const std::ptrdiff_t count = static_cast<std::ptrdiff_t>(n);
+  const int threads = thread_count(settings);
+  std::vector<PairSolution> solution(n);
+  auto accepted = [&](std::size_t i) { return is_accepted(solution[i], refs.textured[i], settings.min_valid_zncc); };
+
+  // 1. From the given starts, every subset alone.
+#pragma omp parallel for schedule(dynamic, 16) num_threads(threads)
+  for (std::ptrdiff_t i = 0; i < count; ++i) {
+    if (!refs.subset[i] || !start[i]) continue;
+    keep_better(solution[i], refine_subset(*refs.subset[i], current.spline, *start[i], settings.icgn));
+  }
+
+  // 2. Seeds: integer-pixel ZNCC search, then IC-GN, for candidates not yet accepted.
+#pragma omp parallel for schedule(dynamic, 1) num_threads(threads)
+  for (std::ptrdiff_t i = 0; i < count; ++i) {
+    if (!refs.subset[i] || !refs.textured[i] || accepted(i) || !is_seed_candidate(grid, i, settings.seed_spacing))
+      continue;
+    const IntegerMatch match = integer_pixel_search(reference.intensity32, current.intensity32, refs.subset[i]->centre,
+                                                    grid.subset_size, prediction[i], settings.search_radius);
+    if (!match.found) continue;
+    WarpParameters p;
+    p.u = match.du;
+    p.v = match.dv;
+    keep_better(solution[i], refine_subset(*refs.subset[i], current.spline, p, settings.icgn));
+  }
+
+  // 3. Reliability-guided propagation from every accepted subset, highest ZNCC first.
+  using Entry = std::pair<double, std::ptrdiff_t>;  // (ZNCC, -index): ties go to the lower index
+  std::priority_queue<Entry> queue;
+  for (std::size_t i = 0; i < n; ++i)
+    if (accepted(i)) queue.emplace(solution[i].best.zncc, -static_cast<std::ptrdiff_t>(i));
+  std::vector<bool> propagated(n, false);
+  while (!queue.empty()) {
+    const std::size_t i = static_cast<std::size_t>(-queue.top().second);
+    queue.pop();
+    if (propagated[i]) continue;
+    propagated[i] = true;
+    const ReferenceSubset& from = *refs.subset[i];
+    for (std::size_t j : grid_neighbours(grid, i)) {
+      if (!refs.subset[j] || accepted(j)) continue;
+      const cv::Point2d offset = refs.subset[j]->centre - from.centre;
+      const WarpParameters guess = shifted_warp(solution[i].best.p, offset.x, offset.y);
+      keep_better(solution[j], refine_subset(*refs.subset[j], current.spline, guess, settings.icgn));
+      if (accepted(j)) queue.emplace(solution[j].best.zncc, -static_cast<std::ptrdiff_t>(j));
+    }
+  }
+  return solution;
+}
+
+}  // namespace trapdem
