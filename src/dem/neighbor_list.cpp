@@ -3,6 +3,10 @@
 #include <algorithm>
 #include <numeric>
 
+#include <fmt/format.h>
+
+#include "dem/errors.hpp"
+
 namespace trapdem {
 
 std::uint32_t PairList::owner_of(std::size_t pair) const {
@@ -155,6 +159,9 @@ void build_wall_candidates(const Particles& p, const std::vector<Wall>& walls, d
       if (near.distance < p.radius[i] + skin) out.wall.push_back(w);
     }
     out.first[i + 1] = static_cast<std::uint32_t>(out.wall.size());
+    if (out.first[i + 1] - out.first[i] > kMaxWallCandidates)
+      throw InputError(fmt::format("particle id {} is within reach of {} walls; at most {} are supported", p.id[i],
+                                   out.first[i + 1] - out.first[i], kMaxWallCandidates));
   }
   out.history.assign(out.wall.size(), ContactHistory{});
   out.force.assign(out.wall.size(), Vec3{});

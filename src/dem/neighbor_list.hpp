@@ -27,6 +27,9 @@ struct PairList {
   std::uint32_t owner_of(std::size_t pair) const;  // binary search in first (slow; tools and tests)
 };
 
+// The most walls one particle may have within reach (a corner of a box has three).
+inline constexpr std::uint32_t kMaxWallCandidates = 16;
+
 // Per particle, the walls within reach: wall[k] for k in [first[i], first[i+1]).
 struct WallList {
   std::vector<std::uint32_t> first;

@@ -3,6 +3,7 @@
 #include <omp.h>
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <limits>
 #include <numeric>
@@ -338,11 +339,24 @@ void Simulation::wall_contacts() {
         fi += f_partner[inc_pair[q]];
         ti += t_partner[inc_pair[q]];
       }
-      for (std::uint32_t k = wfirst[i]; k < wfirst[i + 1]; ++k) {
+      const std::uint32_t k0 = wfirst[i], count = wfirst[i + 1] - k0;
+      std::array<WallProximity, kMaxWallCandidates> near;
+      std::array<bool, kMaxWallCandidates> touching;
+      std::uint32_t touching_count = 0;
+      for (std::uint32_t c = 0; c < count; ++c) {
+        near[c] = wall_proximity(walls[wall_of[k0 + c]], x[i]);
+        touching[c] = near[c].distance < r[i];
+        touching_count += touching[c] ? 1 : 0;
+      }
+      const bool several = touching_count > 1;
+      for (std::uint32_t c = 0; c < count; ++c) {
+        const std::uint32_t k = k0 + c;
         const Wall& wall = walls[wall_of[k]];
-        const WallProximity near = wall_proximity(wall, x[i]);
-        const double overlap = r[i] - near.distance;
-        if (overlap <= 0.0) {
+        const double overlap = r[i] - near[c].distance;
+        if (!touching[c] ||
+            (several && edge_contact_hidden(c, near.data(), touching.data(), count,
+                                            [&](std::size_t b) -> const Wall& { return walls[wall_of[k0 + b]]; },
+                                            1e-6 * r[i]))) {
           if (whist[k].flags != 0) whist[k].reset();
           wforce[k] = Vec3{};
           continue;
@@ -350,20 +364,19 @@ void Simulation::wall_contacts() {
         max_overlap = std::max(max_overlap, overlap / r[i]);
         ContactBodies b;
         b.effective_mass = m[i];
-        b.arm_i = near.distance;
+        b.arm_i = near[c].distance;
         b.arm_j = 0.0;
         b.lever = r[i];
         const double inertia = 1.0 / inv_i[i];
         b.rolling_inertia = inertia + m[i] * r[i] * r[i];
         b.spin_inertia = inertia;
-        const ContactForce cf = contact_force(wc[wall_of[k]], b, near.normal, overlap, v[i] - wall.current_velocity,
-                                              w[i], Vec3{}, whist[k], dt);
+        const ContactForce cf = contact_force(wc[wall_of[k]], b, near[c].normal, overlap,
+                                              v[i] - wall.current_velocity, w[i], Vec3{}, whist[k], dt);
         fi += cf.force;
-        ti += cf.rolling_torque - b.arm_i * cross(near.normal, cf.tangential);
+        ti += cf.rolling_torque - b.arm_i * cross(near[c].normal, cf.tangential);
         wforce[k] = cf.force;
-        const Vec3 contact_point = x[i] - b.arm_i * near.normal;
         my_load[2 * wall_of[k]] -= cf.force;
-        my_load[2 * wall_of[k] + 1] -= cross(contact_point - wall.origin, cf.force);
+        my_load[2 * wall_of[k] + 1] -= cross(near[c].point - wall.origin, cf.force);
       }
       f[i] = fi;
       t[i] = ti;

@@ -1,6 +1,8 @@
 #pragma once
 // Walls: infinite planes and finite rectangles, fixed or moving with a prescribed velocity.
 #include <algorithm>
+#include <cmath>
+#include <cstddef>
 #include <functional>
 #include <string>
 
@@ -44,17 +46,50 @@ struct Wall {
 struct WallProximity {
   Vec3 normal;
   double distance;  // m, signed for planes (negative: the centre is behind the plane)
+  Vec3 point;       // m, the closest point of the wall
+  bool on_face;     // the closest point is inside the face (not on an edge or corner)
 };
 
 inline WallProximity wall_proximity(const Wall& w, const Vec3& x) {
   const Vec3 d = x - w.origin;
-  if (w.shape == WallShape::plane) return {w.normal, dot(d, w.normal)};
-  const double su = std::clamp(dot(d, w.axis_u), -w.half_u, w.half_u);
-  const double sv = std::clamp(dot(d, w.axis_v), -w.half_v, w.half_v);
-  const Vec3 r = d - su * w.axis_u - sv * w.axis_v;
+  if (w.shape == WallShape::plane) {
+    const double h = dot(d, w.normal);
+    return {w.normal, h, x - h * w.normal, true};
+  }
+  const double du = dot(d, w.axis_u), dv = dot(d, w.axis_v);
+  const double su = std::clamp(du, -w.half_u, w.half_u);
+  const double sv = std::clamp(dv, -w.half_v, w.half_v);
+  const bool on_face = su == du && sv == dv;
+  const Vec3 point = w.origin + su * w.axis_u + sv * w.axis_v;
+  const Vec3 r = x - point;
   const double dist = norm(r);
-  if (dist > 0.0) return {r / dist, dist};
-  return {w.normal, 0.0};
+  if (dist > 0.0) return {r / dist, dist, point, on_face};
+  return {w.normal, 0.0, point, on_face};
+}
+
+// Whether `point` lies on the wall's surface (within `tolerance`, m).
+inline bool wall_contains(const Wall& w, const Vec3& point, double tolerance) {
+  const Vec3 d = point - w.origin;
+  if (std::fabs(dot(d, w.normal)) > tolerance) return false;
+  if (w.shape == WallShape::plane) return true;
+  return std::fabs(dot(d, w.axis_u)) <= w.half_u + tolerance && std::fabs(dot(d, w.axis_v)) <= w.half_v + tolerance;
+}
+
+// Walls built of several primitives share edges (a trapdoor flush with the base, a cavity wall
+// meeting it). A particle touching such a surface near the seam would otherwise feel the seam as
+// a second contact. A contact therefore does not count when its closest point is that of a
+// contact counted before it (both rectangles' boundary at the seam), nor, for an edge or corner
+// contact, when its point lies on a face the particle touches (an edge hidden in a flat surface).
+// `touching[k]` marks the candidates in contact; returns whether candidate `a` is hidden.
+template <class WallOf>
+bool edge_contact_hidden(std::size_t a, const WallProximity* near, const bool* touching, std::size_t count,
+                         WallOf&& wall_of, double tolerance) {
+  for (std::size_t b = 0; b < count; ++b) {
+    if (b == a || !touching[b]) continue;
+    if (b < a && norm2(near[b].point - near[a].point) <= tolerance * tolerance) return true;
+    if (!near[a].on_face && near[b].on_face && wall_contains(wall_of(b), near[a].point, tolerance)) return true;
+  }
+  return false;
 }
 
 }  // namespace trapdem
