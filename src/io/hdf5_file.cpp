@@ -1,0 +1,397 @@
+#include "io/hdf5_file.hpp"
+
+#include <algorithm>
+#include <cstring>
+
+#include <fmt/format.h>
+
+namespace trapdem {
+
+namespace fs = std::filesystem;
+
+namespace {
+
+// The innermost description on HDF5's error stack (e.g. "No space left on device" from the
+// file driver), so that our message carries the library's reason.
+std::string hdf5_reason() {
+  std::string deepest;
+  auto walk = [](unsigned, const H5E_error2_t* err, void* data) -> herr_t {
+    if (err && err->desc && *err->desc) *static_cast<std::string*>(data) = err->desc;
+    return 0;
+  };
+  H5Ewalk2(H5E_DEFAULT, H5E_WALK_DOWNWARD, walk, &deepest);  // downward: from the API call to the cause
+  H5Eclear2(H5E_DEFAULT);
+  return deepest.empty() ? "HDF5 error" : deepest;
+}
+
+[[noreturn]] void fail(const std::string& where, std::string_view what) {
+  throw FileError(fmt::format("{}: {} ({})", where, what, hdf5_reason()));
+}
+
+// Without fclose degree "strong", H5Fclose returns while groups or datasets are still open and
+// the final flush (where a full disk shows) happens later, unchecked.
+Hdf5Handle file_access_list() {
+  Hdf5Handle fapl(H5Pcreate(H5P_FILE_ACCESS));
+  H5Pset_fclose_degree(fapl.get(), H5F_CLOSE_STRONG);
+  return fapl;
+}
+
+Hdf5Handle string_type() {
+  Hdf5Handle type(H5Tcopy(H5T_C_S1));
+  H5Tset_size(type.get(), H5T_VARIABLE);
+  H5Tset_cset(type.get(), H5T_CSET_UTF8);
+  return type;
+}
+
+struct Shape {
+  int rank = 0;
+  hsize_t dims[2] = {0, 0};
+};
+
+void write_dataset(const Hdf5Group& g, std::string_view name, hid_t file_type, hid_t memory_type, const void* data,
+                   std::size_t rows, std::size_t columns, std::string_view units) {
+  const std::string key(name);
+  hsize_t dims[2] = {rows, columns};
+  Hdf5Handle space(H5Screate_simple(columns == 0 ? 1 : 2, dims, nullptr));
+  if (!space.valid()) fail(g.describe(name), "cannot create the dataspace");
+  Hdf5Handle set(H5Dcreate2(g.id(), key.c_str(), file_type, space.get(), H5P_DEFAULT, H5P_DEFAULT, H5P_DEFAULT));
+  if (!set.valid()) fail(g.describe(name), "cannot create the dataset");
+  if (rows > 0 && H5Dwrite(set.get(), memory_type, H5S_ALL, H5S_ALL, H5P_DEFAULT, data) < 0)
+    fail(g.describe(name), "cannot write the dataset");
+  if (!units.empty()) {
+    Hdf5Handle type = string_type();
+    Hdf5Handle scalar(H5Screate(H5S_SCALAR));
+    Hdf5Handle attr(H5Acreate2(set.get(), "units", type.get(), scalar.get(), H5P_DEFAULT, H5P_DEFAULT));
+    const std::string text(units);
+    const char* ptr = text.c_str();
+    if (!attr.valid() || H5Awrite(attr.get(), type.get(), &ptr) < 0)
+      fail(g.describe(name), "cannot write the units attribute");
+  }
+}
+
+// Opens a dataset and checks that it is 1-D (columns == 0) or N x columns.
+Hdf5Handle open_dataset(const Hdf5Group& g, std::string_view name, std::size_t columns, std::size_t& rows) {
+  const std::string key(name);
+  if (!g.has(name)) throw FileError(fmt::format("{}: no such dataset", g.describe(name)));
+  Hdf5Handle set(H5Dopen2(g.id(), key.c_str(), H5P_DEFAULT));
+  if (!set.valid()) fail(g.describe(name), "cannot open the dataset");
+  Hdf5Handle space(H5Dget_space(set.get()));
+  const int rank = H5Sget_simple_extent_ndims(space.get());
+  hsize_t dims[H5S_MAX_RANK] = {};
+  if (rank > 0) H5Sget_simple_extent_dims(space.get(), dims, nullptr);
+  const bool ok = columns == 0 ? rank == 1 : (rank == 2 && dims[1] == columns);
+  if (!ok) {
+    std::string found = "rank " + std::to_string(rank) + " (";
+    for (int r = 0; r < rank; ++r) found += (r ? " x " : "") + std::to_string(dims[r]);
+    found += ")";
+    throw FileError(fmt::format("{}: expected {}, found a dataset of {}", g.describe(name),
+                                columns == 0 ? std::string("a 1-D dataset") : fmt::format("an N x {} dataset", columns),
+                                found));
+  }
+  rows = dims[0];
+  return set;
+}
+
+template <class T>
+std::vector<T> read_dataset(const Hdf5Group& g, std::string_view name, hid_t memory_type, std::size_t columns) {
+  std::size_t rows = 0;
+  Hdf5Handle set = open_dataset(g, name, columns, rows);
+  std::vector<T> out(rows);
+  if (rows > 0 && H5Dread(set.get(), memory_type, H5S_ALL, H5S_ALL, H5P_DEFAULT, out.data()) < 0)
+    fail(g.describe(name), "cannot read the dataset (is its number type convertible?)");
+  return out;
+}
+
+Hdf5Handle open_attribute(const Hdf5Group& g, std::string_view name) {
+  const std::string key(name);
+  if (!g.has_attribute(name))
+    throw FileError(fmt::format("{}: no attribute '{}'", g.describe(), key));
+  Hdf5Handle attr(H5Aopen(g.id(), key.c_str(), H5P_DEFAULT));
+  if (!attr.valid()) fail(g.describe(), fmt::format("cannot open attribute '{}'", key));
+  return attr;
+}
+
+// Creates (replacing an existing one) a scalar attribute.
+Hdf5Handle create_attribute(const Hdf5Group& g, std::string_view name, hid_t type) {
+  const std::string key(name);
+  if (H5Aexists(g.id(), key.c_str()) > 0) H5Adelete(g.id(), key.c_str());
+  Hdf5Handle scalar(H5Screate(H5S_SCALAR));
+  Hdf5Handle attr(H5Acreate2(g.id(), key.c_str(), type, scalar.get(), H5P_DEFAULT, H5P_DEFAULT));
+  if (!attr.valid()) fail(g.describe(), fmt::format("cannot create attribute '{}'", key));
+  return attr;
+}
+
+// Reads a string of either kind HDF5 stores (variable length, as trapdem and h5py write, or fixed
+// length, as numpy byte strings are).
+std::string read_string_value(hid_t object, hid_t stored_type, bool attribute, const std::string& where) {
+  if (H5Tget_class(stored_type) != H5T_STRING) throw FileError(where + ": expected a string");
+  if (H5Tis_variable_str(stored_type) > 0) {
+    Hdf5Handle type = string_type();
+    char* ptr = nullptr;
+    const herr_t rc = attribute ? H5Aread(object, type.get(), &ptr) : H5Dread(object, type.get(), H5S_ALL, H5S_ALL, H5P_DEFAULT, &ptr);
+    if (rc < 0) fail(where, "cannot read the string");
+    std::string out = ptr ? ptr : "";
+    H5free_memory(ptr);
+    return out;
+  }
+  const std::size_t size = H5Tget_size(stored_type);
+  std::string buffer(size, '\0');
+  Hdf5Handle type(H5Tcopy(stored_type));
+  const herr_t rc = attribute ? H5Aread(object, type.get(), buffer.data())
+                              : H5Dread(object, type.get(), H5S_ALL, H5S_ALL, H5P_DEFAULT, buffer.data());
+  if (rc < 0) fail(where, "cannot read the string");
+  buffer.resize(std::strlen(buffer.c_str()));  // fixed-length strings are NUL- or space-padded
+  while (!buffer.empty() && buffer.back() == ' ') buffer.pop_back();
+  return buffer;
+}
+
+}  // namespace
+
+void silence_hdf5_errors() { H5Eset_auto2(H5E_DEFAULT, nullptr, nullptr); }
+
+// ---------------------------------------------------------------------------------------------
+Hdf5Handle& Hdf5Handle::operator=(Hdf5Handle&& other) noexcept {
+  if (this != &other) {
+    reset();
+    id_ = other.id_;
+    other.id_ = H5I_INVALID_HID;
+  }
+  return *this;
+}
+
+void Hdf5Handle::reset() {
+  if (id_ < 0) return;
+  switch (H5Iget_type(id_)) {
+    case H5I_FILE: H5Fclose(id_); break;
+    case H5I_GROUP: H5Gclose(id_); break;
+    case H5I_DATASET: H5Dclose(id_); break;
+    case H5I_DATASPACE: H5Sclose(id_); break;
+    case H5I_DATATYPE: H5Tclose(id_); break;
+    case H5I_ATTR: H5Aclose(id_); break;
+    case H5I_GENPROP_LST: H5Pclose(id_); break;
+    default: break;  // already closed (a strong file close takes its objects with it)
+  }
+  id_ = H5I_INVALID_HID;
+}
+
+hid_t Hdf5Handle::release() {
+  const hid_t id = id_;
+  id_ = H5I_INVALID_HID;
+  return id;
+}
+
+// ---------------------------------------------------------------------------------------------
+std::string Hdf5Group::child_path(std::string_view name) const {
+  std::string out = path_;
+  if (out.empty() || out.back() != '/') out += '/';
+  out += name;
+  return out;
+}
+
+std::string Hdf5Group::describe(std::string_view name) const {
+  return fmt::format("{}: {}", file_, name.empty() ? path_ : child_path(name));
+}
+
+bool Hdf5Group::has(std::string_view name) const {
+  const std::string key(name);
+  return H5Lexists(id(), key.c_str(), H5P_DEFAULT) > 0;
+}
+
+Hdf5Group Hdf5Group::create_group(std::string_view name) const {
+  const std::string key(name);
+  Hdf5Handle g(H5Gcreate2(id(), key.c_str(), H5P_DEFAULT, H5P_DEFAULT, H5P_DEFAULT));
+  if (!g.valid()) fail(describe(name), "cannot create the group");
+  return Hdf5Group(file_, child_path(name), std::move(g));
+}
+
+Hdf5Group Hdf5Group::group(std::string_view name) const {
+  const std::string key(name);
+  if (!has(name)) throw FileError(fmt::format("{}: no such group", describe(name)));
+  Hdf5Handle g(H5Gopen2(id(), key.c_str(), H5P_DEFAULT));
+  if (!g.valid()) fail(describe(name), "cannot open the group");
+  return Hdf5Group(file_, child_path(name), std::move(g));
+}
+
+std::vector<std::string> Hdf5Group::children() const {
+  std::vector<std::string> names;
+  auto collect = [](hid_t, const char* name, const H5L_info_t*, void* data) -> herr_t {
+    static_cast<std::vector<std::string>*>(data)->emplace_back(name);
+    return 0;
+  };
+  if (H5Literate(id(), H5_INDEX_NAME, H5_ITER_INC, nullptr, collect, &names) < 0)
+    fail(describe(), "cannot list the group");
+  return names;
+}
+
+void Hdf5Group::write_doubles(std::string_view name, std::span<const double> data, std::string_view units) const {
+  write_dataset(*this, name, H5T_IEEE_F64LE, H5T_NATIVE_DOUBLE, data.data(), data.size(), 0, units);
+}
+void Hdf5Group::write_int64s(std::string_view name, std::span<const std::int64_t> data, std::string_view units) const {
+  write_dataset(*this, name, H5T_STD_I64LE, H5T_NATIVE_INT64, data.data(), data.size(), 0, units);
+}
+void Hdf5Group::write_uint32s(std::string_view name, std::span<const std::uint32_t> data) const {
+  write_dataset(*this, name, H5T_STD_U32LE, H5T_NATIVE_UINT32, data.data(), data.size(), 0, {});
+}
+void Hdf5Group::write_uint8s(std::string_view name, std::span<const std::uint8_t> data) const {
+  write_dataset(*this, name, H5T_STD_U8LE, H5T_NATIVE_UINT8, data.data(), data.size(), 0, {});
+}
+void Hdf5Group::write_vec3s(std::string_view name, std::span<const Vec3> data, std::string_view units) const {
+  static_assert(sizeof(Vec3) == 3 * sizeof(double), "Vec3 must be three packed doubles");
+  write_dataset(*this, name, H5T_IEEE_F64LE, H5T_NATIVE_DOUBLE, data.data(), data.size(), 3, units);
+}
+void Hdf5Group::write_int3s(std::string_view name, std::span<const Int3> data) const {
+  static_assert(sizeof(Int3) == 3 * sizeof(std::int32_t), "Int3 must be three packed int32");
+  write_dataset(*this, name, H5T_STD_I32LE, H5T_NATIVE_INT32, data.data(), data.size(), 3, {});
+}
+
+void Hdf5Group::write_strings(std::string_view name, const std::vector<std::string>& data) const {
+  std::vector<const char*> pointers;
+  for (const std::string& s : data) pointers.push_back(s.c_str());
+  Hdf5Handle type = string_type();
+  write_dataset(*this, name, type.get(), type.get(), pointers.data(), pointers.size(), 0, {});
+}
+
+std::vector<double> Hdf5Group::read_doubles(std::string_view name) const {
+  return read_dataset<double>(*this, name, H5T_NATIVE_DOUBLE, 0);
+}
+std::vector<std::int64_t> Hdf5Group::read_int64s(std::string_view name) const {
+  return read_dataset<std::int64_t>(*this, name, H5T_NATIVE_INT64, 0);
+}
+std::vector<std::uint32_t> Hdf5Group::read_uint32s(std::string_view name) const {
+  return read_dataset<std::uint32_t>(*this, name, H5T_NATIVE_UINT32, 0);
+}
+std::vector<std::uint8_t> Hdf5Group::read_uint8s(std::string_view name) const {
+  return read_dataset<std::uint8_t>(*this, name, H5T_NATIVE_UINT8, 0);
+}
+std::vector<Vec3> Hdf5Group::read_vec3s(std::string_view name) const {
+  return read_dataset<Vec3>(*this, name, H5T_NATIVE_DOUBLE, 3);
+}
+std::vector<Int3> Hdf5Group::read_int3s(std::string_view name) const {
+  return read_dataset<Int3>(*this, name, H5T_NATIVE_INT32, 3);
+}
+
+std::vector<std::string> Hdf5Group::read_strings(std::string_view name) const {
+  std::size_t rows = 0;
+  Hdf5Handle set = open_dataset(*this, name, 0, rows);
+  Hdf5Handle stored(H5Dget_type(set.get()));
+  if (H5Tget_class(stored.get()) != H5T_STRING || H5Tis_variable_str(stored.get()) <= 0)
+    throw FileError(fmt::format("{}: expected variable-length strings", describe(name)));
+  Hdf5Handle type = string_type();
+  std::vector<char*> pointers(rows, nullptr);
+  if (rows > 0 && H5Dread(set.get(), type.get(), H5S_ALL, H5S_ALL, H5P_DEFAULT, pointers.data()) < 0)
+    fail(describe(name), "cannot read the strings");
+  std::vector<std::string> out;
+  for (char* p : pointers) {
+    out.emplace_back(p ? p : "");
+    H5free_memory(p);
+  }
+  return out;
+}
+
+std::size_t Hdf5Group::dataset_length(std::string_view name) const {
+  const std::string key(name);
+  if (!has(name)) throw FileError(fmt::format("{}: no such dataset", describe(name)));
+  Hdf5Handle set(H5Dopen2(id(), key.c_str(), H5P_DEFAULT));
+  if (!set.valid()) fail(describe(name), "cannot open the dataset");
+  Hdf5Handle space(H5Dget_space(set.get()));
+  hsize_t dims[H5S_MAX_RANK] = {};
+  const int rank = H5Sget_simple_extent_dims(space.get(), dims, nullptr);
+  return rank > 0 ? dims[0] : 1;
+}
+
+void Hdf5Group::set_double_attribute(std::string_view name, double value) const {
+  Hdf5Handle attr = create_attribute(*this, name, H5T_IEEE_F64LE);
+  if (H5Awrite(attr.get(), H5T_NATIVE_DOUBLE, &value) < 0)
+    fail(describe(), fmt::format("cannot write attribute '{}'", name));
+}
+
+void Hdf5Group::set_int_attribute(std::string_view name, std::int64_t value) const {
+  Hdf5Handle attr = create_attribute(*this, name, H5T_STD_I64LE);
+  if (H5Awrite(attr.get(), H5T_NATIVE_INT64, &value) < 0)
+    fail(describe(), fmt::format("cannot write attribute '{}'", name));
+}
+
+void Hdf5Group::set_string_attribute(std::string_view name, std::string_view value) const {
+  Hdf5Handle type = string_type();
+  Hdf5Handle attr = create_attribute(*this, name, type.get());
+  const std::string text(value);
+  const char* ptr = text.c_str();
+  if (H5Awrite(attr.get(), type.get(), &ptr) < 0) fail(describe(), fmt::format("cannot write attribute '{}'", name));
+}
+
+bool Hdf5Group::has_attribute(std::string_view name) const {
+  const std::string key(name);
+  return H5Aexists(id(), key.c_str()) > 0;
+}
+
+double Hdf5Group::double_attribute(std::string_view name) const {
+  Hdf5Handle attr = open_attribute(*this, name);
+  double value = 0.0;
+  if (H5Aread(attr.get(), H5T_NATIVE_DOUBLE, &value) < 0)
+    fail(describe(), fmt::format("attribute '{}' is not a number", name));
+  return value;
+}
+
+std::int64_t Hdf5Group::int_attribute(std::string_view name) const {
+  Hdf5Handle attr = open_attribute(*this, name);
+  std::int64_t value = 0;
+  if (H5Aread(attr.get(), H5T_NATIVE_INT64, &value) < 0)
+    fail(describe(), fmt::format("attribute '{}' is not an integer", name));
+  return value;
+}
+
+std::string Hdf5Group::string_attribute(std::string_view name) const {
+  Hdf5Handle attr = open_attribute(*this, name);
+  Hdf5Handle stored(H5Aget_type(attr.get()));
+  return read_string_value(attr.get(), stored.get(), true, fmt::format("{}: attribute '{}'", describe(), name));
+}
+
+std::vector<std::string> Hdf5Group::attribute_names() const {
+  std::vector<std::string> names;
+  auto collect = [](hid_t, const char* name, const H5A_info_t*, void* data) -> herr_t {
+    static_cast<std::vector<std::string>*>(data)->emplace_back(name);
+    return 0;
+  };
+  if (H5Aiterate2(id(), H5_INDEX_NAME, H5_ITER_INC, nullptr, collect, &names) < 0)
+    fail(describe(), "cannot list the attributes");
+  return names;
+}
+
+// ---------------------------------------------------------------------------------------------
+Hdf5File Hdf5File::create(const fs::path& path) {
+  silence_hdf5_errors();
+  Hdf5Handle fapl = file_access_list();
+  Hdf5Handle file(H5Fcreate(path.c_str(), H5F_ACC_TRUNC, H5P_DEFAULT, fapl.get()));
+  if (!file.valid()) fail(path.string(), "cannot create the HDF5 file");
+  return Hdf5File(path.string(), "/", std::move(file));
+}
+
+Hdf5File Hdf5File::open_read(const fs::path& path) {
+  silence_hdf5_errors();
+  std::error_code ec;
+  if (!fs::exists(path, ec)) throw FileError(fmt::format("{}: no such file", path.string()));
+  Hdf5Handle fapl = file_access_list();
+  Hdf5Handle file(H5Fopen(path.c_str(), H5F_ACC_RDONLY, fapl.get()));
+  if (!file.valid()) fail(path.string(), "cannot open as an HDF5 file (damaged or not HDF5?)");
+  return Hdf5File(path.string(), "/", std::move(file));
+}
+
+Hdf5File Hdf5File::open_read_write(const fs::path& path) {
+  silence_hdf5_errors();
+  Hdf5Handle fapl = file_access_list();
+  Hdf5Handle file(H5Fopen(path.c_str(), H5F_ACC_RDWR, fapl.get()));
+  if (!file.valid()) fail(path.string(), "cannot open the HDF5 file for writing");
+  return Hdf5File(path.string(), "/", std::move(file));
+}
+
+void Hdf5File::close() {
+  if (!handle_.valid()) return;
+  const hid_t id = handle_.release();
+  if (H5Fflush(id, H5F_SCOPE_LOCAL) < 0) {
+    H5Fclose(id);
+    fail(file_, "cannot write the file's data to disk");
+  }
+  if (H5Fclose(id) < 0) fail(file_, "closing the file failed");
+}
+
+}  // namespace trapdem
