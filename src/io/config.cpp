@@ -1,0 +1,592 @@
+#include "io/config.hpp"
+
+#include <algorithm>
+#include <cerrno>
+#include <cstring>
+#include <cmath>
+#include <fstream>
+#include <map>
+#include <set>
+#include <sstream>
+
+#include <fmt/format.h>
+#include <toml++/toml.h>
+
+namespace trapdem {
+
+struct Config::State {
+  std::string source;                                   // file name for messages
+  toml::table document;
+  std::map<std::string, std::string> override_origin;   // full key -> "--set key=value"
+  std::set<std::string> used;                           // full keys asked for (tables included)
+  toml::table resolved;                                 // final values of the keys asked for
+  std::map<std::string, std::string> units;             // full key -> unit, for comments
+};
+
+namespace {
+
+std::vector<std::string> split_key(std::string_view key) {
+  std::vector<std::string> parts;
+  std::size_t start = 0;
+  while (true) {
+    const std::size_t dot = key.find('.', start);
+    parts.emplace_back(key.substr(start, dot == std::string_view::npos ? std::string_view::npos : dot - start));
+    if (dot == std::string_view::npos) break;
+    start = dot + 1;
+  }
+  return parts;
+}
+
+std::string join_key(const std::vector<std::string>& parts, std::size_t count) {
+  std::string out;
+  for (std::size_t i = 0; i < count; ++i) out += (i ? "." : "") + parts[i];
+  return out;
+}
+
+bool is_bare_key(std::string_view key) {
+  return !key.empty() && std::all_of(key.begin(), key.end(), [](char c) {
+    return std::isalnum(static_cast<unsigned char>(c)) || c == '_' || c == '-';
+  });
+}
+
+std::string trim(std::string_view s) {
+  const auto first = s.find_first_not_of(" \t\r\n");
+  if (first == std::string_view::npos) return "";
+  const auto last = s.find_last_not_of(" \t\r\n");
+  return std::string(s.substr(first, last - first + 1));
+}
+
+const char* type_name(const toml::node& node) {
+  switch (node.type()) {
+    case toml::node_type::string: return "a string";
+    case toml::node_type::integer: return "an integer";
+    case toml::node_type::floating_point: return "a float";
+    case toml::node_type::boolean: return "a boolean";
+    case toml::node_type::date: return "a date";
+    case toml::node_type::time: return "a time";
+    case toml::node_type::date_time: return "a date-time";
+    case toml::node_type::array: return "an array";
+    case toml::node_type::table: return "a table";
+    default: return "nothing";
+  }
+}
+
+// TOML text of a value (round-trips: shortest representation that reads back the same double).
+std::string format_double(double x) {
+  if (std::isnan(x)) return "nan";
+  if (std::isinf(x)) return x > 0 ? "inf" : "-inf";
+  std::string s = fmt::format("{}", x);
+  if (s.find_first_of(".e") == std::string::npos) s += ".0";
+  return s;
+}
+
+std::string quote(std::string_view text) {
+  std::string out = "\"";
+  for (char c : text) {
+    switch (c) {
+      case '"': out += "\\\""; break;
+      case '\\': out += "\\\\"; break;
+      case '\n': out += "\\n"; break;
+      case '\t': out += "\\t"; break;
+      case '\r': out += "\\r"; break;
+      case '\b': out += "\\b"; break;
+      case '\f': out += "\\f"; break;
+      default:
+        if (static_cast<unsigned char>(c) < 0x20) out += fmt::format("\\u{:04X}", int(c));
+        else out += c;
+    }
+  }
+  return out + "\"";
+}
+
+std::string format_value(const toml::node& node) {
+  if (auto v = node.as_floating_point()) return format_double(v->get());
+  if (auto v = node.as_integer()) return std::to_string(v->get());
+  if (auto v = node.as_boolean()) return v->get() ? "true" : "false";
+  if (auto v = node.as_string()) return quote(v->get());
+  if (auto a = node.as_array()) {
+    std::string out = "[";
+    for (std::size_t i = 0; i < a->size(); ++i) out += (i ? ", " : "") + format_value(*a->get(i));
+    return out + "]";
+  }
+  std::ostringstream os;  // dates, times, tables: toml++'s own formatting
+  node.visit([&](const auto& n) { os << n; });
+  return os.str();
+}
+
+std::string describe_found(const toml::node& node) {
+  std::string text = node.is_table() ? "{...}" : format_value(node);
+  if (text.size() > 60) text = text.substr(0, 57) + "...";
+  return fmt::format("{} ({})", text, type_name(node));
+}
+
+std::string expectation(std::string_view what, std::string_view unit, const Range& range) {
+  std::string out(what);
+  const std::string bounds = range.describe();
+  if (!bounds.empty()) out += " " + bounds;
+  if (!unit.empty()) out += fmt::format(" ({})", unit);
+  return out;
+}
+
+std::size_t edit_distance(std::string_view a, std::string_view b) {
+  std::vector<std::size_t> row(b.size() + 1);
+  for (std::size_t j = 0; j <= b.size(); ++j) row[j] = j;
+  for (std::size_t i = 1; i <= a.size(); ++i) {
+    std::size_t diagonal = row[0];
+    row[0] = i;
+    for (std::size_t j = 1; j <= b.size(); ++j) {
+      const std::size_t above = row[j];
+      row[j] = std::min({row[j] + 1, row[j - 1] + 1, diagonal + (a[i - 1] == b[j - 1] ? 0 : 1)});
+      diagonal = above;
+    }
+  }
+  return row[b.size()];
+}
+
+// Inserts `value` at the dotted `key` of `root`, creating tables on the way.
+void insert_at(toml::table& root, std::string_view key, toml::node&& value) {
+  const std::vector<std::string> parts = split_key(key);
+  toml::table* table = &root;
+  for (std::size_t i = 0; i + 1 < parts.size(); ++i) {
+    toml::node* next = table->get(parts[i]);
+    if (!next || !next->is_table()) {
+      table->insert_or_assign(parts[i], toml::table{});
+      next = table->get(parts[i]);
+    }
+    table = next->as_table();
+  }
+  std::move(value).visit([&](auto&& v) { table->insert_or_assign(parts.back(), std::move(v)); });
+}
+
+}  // namespace
+
+// ---------------------------------------------------------------------------------------------
+bool Range::contains(double x) const {
+  if (std::isnan(x)) return false;
+  const bool above = lower_inclusive ? x >= lower : x > lower;
+  const bool below = upper_inclusive ? x <= upper : x < upper;
+  return above && below;
+}
+
+std::string Range::describe() const {
+  const bool has_lower = std::isfinite(lower), has_upper = std::isfinite(upper);
+  if (has_lower && has_upper)
+    return fmt::format("in {}{}, {}{}", lower_inclusive ? '[' : '(', lower, upper, upper_inclusive ? ']' : ')');
+  if (has_lower) return fmt::format("{} {}", lower_inclusive ? ">=" : ">", lower);
+  if (has_upper) return fmt::format("{} {}", upper_inclusive ? "<=" : "<", upper);
+  return "";
+}
+
+// ---------------------------------------------------------------------------------------------
+Config Config::load_file(const std::string& path) {
+  std::ifstream in(path, std::ios::binary);
+  if (!in) throw InputError(fmt::format("cannot read the configuration file {}: {}", path, std::strerror(errno)));
+  std::ostringstream text;
+  text << in.rdbuf();
+  return parse(text.str(), path);
+}
+
+Config Config::parse(std::string_view text, std::string source_name) {
+  auto state = std::make_shared<State>();
+  state->source = std::move(source_name);
+  try {
+    state->document = toml::parse(text, state->source);
+  } catch (const toml::parse_error& e) {
+    throw InputError(fmt::format("{}:{}:{}: TOML syntax error: {}", state->source, e.source().begin.line,
+                                 e.source().begin.column, e.description()));
+  }
+  return Config(std::move(state), "");
+}
+
+const std::string& Config::source_name() const { return state_->source; }
+
+std::string Config::full_key(std::string_view key) const { return prefix_ + std::string(key); }
+
+void Config::apply_override(std::string_view assignment) {
+  const std::string origin = fmt::format("--set {}", assignment);
+  const auto eq = assignment.find('=');
+  if (eq == std::string_view::npos)
+    throw InputError(fmt::format("{}: expected key.path=value", origin));
+  const std::string key = full_key(trim(assignment.substr(0, eq)));
+  const std::string text = trim(assignment.substr(eq + 1));
+  const std::vector<std::string> parts = split_key(key);
+  for (const std::string& part : parts)
+    if (!is_bare_key(part))
+      throw InputError(fmt::format("{}: '{}' is not a key path (letters, digits, _ and - separated by dots)", origin, key));
+
+  toml::table holder;
+  try {
+    holder = toml::parse(std::string_view("value = " + text), std::string_view("--set"));
+  } catch (const toml::parse_error&) {
+    holder.insert_or_assign("value", text);  // not TOML: a bare word is meant as a string
+  }
+  if (!holder.get("value") || holder.size() != 1) {  // "1\nx = 2" and the like
+    holder = toml::table{};
+    holder.insert_or_assign("value", text);
+  }
+  toml::node& value = *holder.get("value");
+
+  // Refuse to turn a value into a table or a table into a value: that is a wrong key, not an override.
+  toml::table* table = &state_->document;
+  for (std::size_t i = 0; i + 1 < parts.size(); ++i) {
+    toml::node* next = table->get(parts[i]);
+    if (!next) break;
+    if (!next->is_table())
+      throw InputError(fmt::format("{}: {} is {} in {}, not a table", origin, join_key(parts, i + 1),
+                                   type_name(*next), state_->source));
+    table = next->as_table();
+  }
+  if (const toml::node* existing = state_->document.at_path(key).node(); existing && existing->is_table() != value.is_table())
+    throw InputError(fmt::format("{}: {} is {} in {}", origin, key, type_name(*existing), state_->source));
+  insert_at(state_->document, key, std::move(value));
+  state_->override_origin[key] = origin;
+}
+
+void Config::apply_overrides(const std::vector<std::string>& assignments) {
+  for (const std::string& a : assignments) apply_override(a);
+}
+
+// ---------------------------------------------------------------------------------------------
+namespace {
+
+// Where a key's value came from: "file:line:column" or "--set key=value".
+std::string location(const Config::State& s, const std::string& key, const toml::node* node) {
+  const std::vector<std::string> parts = split_key(key.substr(0, key.find('[')));  // "a.b[2]": element of a.b
+  for (std::size_t n = parts.size(); n > 0; --n) {
+    auto it = s.override_origin.find(join_key(parts, n));
+    if (it != s.override_origin.end()) return it->second;
+  }
+  if (node && node->source().begin)
+    return fmt::format("{}:{}:{}", s.source, node->source().begin.line, node->source().begin.column);
+  return s.source;
+}
+
+// The node at a dotted key, or nullptr. An intermediate that is not a table is an error.
+const toml::node* find(const Config::State& s, const std::string& key) {
+  const std::vector<std::string> parts = split_key(key);
+  const toml::table* table = &s.document;
+  for (std::size_t i = 0; i < parts.size(); ++i) {
+    const toml::node* node = table->get(parts[i]);
+    if (!node) return nullptr;
+    if (i + 1 == parts.size()) return node;
+    if (!node->is_table()) {
+      const std::string partial = join_key(parts, i + 1);
+      throw InputError(fmt::format("{}: {} = {}: expected a table (it holds {})", location(s, partial, node), partial,
+                                   describe_found(*node), key));
+    }
+    table = node->as_table();
+  }
+  return nullptr;
+}
+
+[[noreturn]] void wrong(const Config::State& s, const std::string& key, const toml::node& node, const std::string& expected) {
+  throw InputError(fmt::format("{}: {} = {}: expected {}", location(s, key, &node), key, describe_found(node), expected));
+}
+
+[[noreturn]] void missing(const Config::State& s, const std::string& key, const std::string& expected) {
+  throw InputError(fmt::format("{}: missing required key {}: expected {}", s.source, key, expected));
+}
+
+void record(Config::State& s, const std::string& key, toml::node&& value, std::string_view unit) {
+  s.used.insert(key);
+  insert_at(s.resolved, key, std::move(value));
+  if (!unit.empty()) s.units[key] = std::string(unit);
+}
+
+double number_of(const Config::State& s, const std::string& key, const toml::node& node, std::string_view unit,
+                 const Range& range) {
+  double x;
+  if (auto f = node.as_floating_point()) x = f->get();
+  else if (auto i = node.as_integer()) x = static_cast<double>(i->get());
+  else wrong(s, key, node, expectation("a number", unit, range));
+  if (!range.contains(x)) wrong(s, key, node, expectation("a number", unit, range));
+  return x;
+}
+
+std::int64_t integer_of(const Config::State& s, const std::string& key, const toml::node& node, const Range& range) {
+  auto i = node.as_integer();
+  if (!i) wrong(s, key, node, expectation("an integer", {}, range));
+  if (!range.contains(static_cast<double>(i->get()))) wrong(s, key, node, expectation("an integer", {}, range));
+  return i->get();
+}
+
+template <class T>
+T element_of(const Config::State& s, const std::string& key, const toml::node& node, std::string_view unit,
+             const Range& range) {
+  if constexpr (std::is_same_v<T, double>) return number_of(s, key, node, unit, range);
+  else if constexpr (std::is_same_v<T, std::int64_t>) return integer_of(s, key, node, range);
+  else {
+    static_assert(std::is_same_v<T, std::string>, "get_vector<T>: T is double, std::int64_t or std::string");
+    auto str = node.as_string();
+    if (!str) wrong(s, key, node, "a string");
+    return str->get();
+  }
+}
+
+template <class T>
+const char* element_name() {
+  if constexpr (std::is_same_v<T, double>) return "numbers";
+  else if constexpr (std::is_same_v<T, std::int64_t>) return "integers";
+  else return "strings";
+}
+
+}  // namespace
+
+// ---------------------------------------------------------------------------------------------
+double Config::get_double(std::string_view key, double default_value, std::string_view unit, Range range) {
+  const std::string k = full_key(key);
+  const toml::node* node = find(*state_, k);
+  const double x = node ? number_of(*state_, k, *node, unit, range) : default_value;
+  record(*state_, k, toml::value<double>(x), unit);
+  return x;
+}
+
+std::int64_t Config::get_int(std::string_view key, std::int64_t default_value, Range range) {
+  const std::string k = full_key(key);
+  const toml::node* node = find(*state_, k);
+  const std::int64_t x = node ? integer_of(*state_, k, *node, range) : default_value;
+  record(*state_, k, toml::value<std::int64_t>(x), {});
+  return x;
+}
+
+bool Config::get_bool(std::string_view key, bool default_value) {
+  const std::string k = full_key(key);
+  const toml::node* node = find(*state_, k);
+  bool x = default_value;
+  if (node) {
+    auto b = node->as_boolean();
+    if (!b) wrong(*state_, k, *node, "a boolean (true or false)");
+    x = b->get();
+  }
+  record(*state_, k, toml::value<bool>(x), {});
+  return x;
+}
+
+std::string Config::get_string(std::string_view key, std::string_view default_value) {
+  const std::string k = full_key(key);
+  const toml::node* node = find(*state_, k);
+  std::string x(default_value);
+  if (node) x = element_of<std::string>(*state_, k, *node, {}, {});
+  record(*state_, k, toml::value<std::string>(x), {});
+  return x;
+}
+
+std::string Config::get_choice(std::string_view key, std::string_view default_value,
+                               const std::vector<std::string>& choices) {
+  const std::string k = full_key(key);
+  std::string listed;
+  for (const std::string& c : choices) listed += (listed.empty() ? "" : ", ") + quote(c);
+  const std::string expected = "one of " + listed;
+  const toml::node* node = find(*state_, k);
+  std::string x(default_value);
+  if (node) {
+    auto str = node->as_string();
+    if (!str || std::find(choices.begin(), choices.end(), str->get()) == choices.end()) wrong(*state_, k, *node, expected);
+    x = str->get();
+  }
+  record(*state_, k, toml::value<std::string>(x), {});
+  return x;
+}
+
+template <class T>
+std::vector<T> Config::get_vector(std::string_view key, const std::vector<T>& default_value, std::string_view unit,
+                                  Range range) {
+  const std::string k = full_key(key);
+  const toml::node* node = find(*state_, k);
+  std::vector<T> out = default_value;
+  if (node) {
+    auto array = node->as_array();
+    if (!array) wrong(*state_, k, *node, fmt::format("an array of {}", element_name<T>()));
+    out.clear();
+    for (std::size_t i = 0; i < array->size(); ++i)
+      out.push_back(element_of<T>(*state_, fmt::format("{}[{}]", k, i), *array->get(i), unit, range));
+  }
+  toml::array resolved;
+  for (const T& x : out) resolved.push_back(x);
+  record(*state_, k, std::move(resolved), unit);
+  return out;
+}
+
+template std::vector<double> Config::get_vector(std::string_view, const std::vector<double>&, std::string_view, Range);
+template std::vector<std::int64_t> Config::get_vector(std::string_view, const std::vector<std::int64_t>&,
+                                                      std::string_view, Range);
+template std::vector<std::string> Config::get_vector(std::string_view, const std::vector<std::string>&,
+                                                     std::string_view, Range);
+
+double Config::require_double(std::string_view key, std::string_view unit, Range range) {
+  if (!has(key)) missing(*state_, full_key(key), expectation("a number", unit, range));
+  return get_double(key, 0.0, unit, range);
+}
+
+std::int64_t Config::require_int(std::string_view key, Range range) {
+  if (!has(key)) missing(*state_, full_key(key), expectation("an integer", {}, range));
+  return get_int(key, 0, range);
+}
+
+bool Config::require_bool(std::string_view key) {
+  if (!has(key)) missing(*state_, full_key(key), "a boolean (true or false)");
+  return get_bool(key, false);
+}
+
+std::string Config::require_string(std::string_view key) {
+  if (!has(key)) missing(*state_, full_key(key), "a string");
+  return get_string(key, "");
+}
+
+template <class T>
+std::vector<T> Config::require_vector(std::string_view key, std::string_view unit, Range range) {
+  if (!has(key)) missing(*state_, full_key(key), expectation(fmt::format("an array of {}", element_name<T>()), unit, range));
+  return get_vector<T>(key, {}, unit, range);
+}
+
+template std::vector<double> Config::require_vector(std::string_view, std::string_view, Range);
+template std::vector<std::int64_t> Config::require_vector(std::string_view, std::string_view, Range);
+template std::vector<std::string> Config::require_vector(std::string_view, std::string_view, Range);
+
+Config Config::get_table(std::string_view key) {
+  const std::string k = full_key(key);
+  const toml::node* node = find(*state_, k);
+  if (node && !node->is_table()) wrong(*state_, k, *node, "a table");
+  state_->used.insert(k);
+  return Config(state_, k + ".");
+}
+
+bool Config::has(std::string_view key) const { return find(*state_, full_key(key)) != nullptr; }
+
+std::vector<std::string> Config::keys(std::string_view table_key) const {
+  const toml::table* table = &state_->document;
+  const std::string k = table_key.empty() ? (prefix_.empty() ? "" : prefix_.substr(0, prefix_.size() - 1))
+                                          : full_key(table_key);
+  if (!k.empty()) {
+    const toml::node* node = find(*state_, k);
+    if (!node) return {};
+    if (!node->is_table()) wrong(*state_, k, *node, "a table");
+    table = node->as_table();
+  }
+  std::vector<std::string> out;
+  for (const auto& [name, node] : *table) out.emplace_back(name.str());
+  return out;
+}
+
+InputError Config::error(std::string_view key, std::string_view expected) const {
+  const std::string k = full_key(key);
+  if (const toml::node* node = find(*state_, k))
+    return InputError(fmt::format("{}: {} = {}: expected {}", location(*state_, k, node), k, describe_found(*node), expected));
+  if (const toml::node* resolved = state_->resolved.at_path(k).node())
+    return InputError(fmt::format("{}: {} = {} (the default): expected {}", state_->source, k, describe_found(*resolved),
+                                  expected));
+  return InputError(fmt::format("{}: {}: expected {}", state_->source, k, expected));
+}
+
+// ---------------------------------------------------------------------------------------------
+namespace {
+
+struct Unknown {
+  std::string key;
+  const toml::node* node;
+};
+
+void collect_unused(const Config::State& s, const toml::table& table, const std::string& prefix,
+                    std::vector<Unknown>& out) {
+  for (const auto& [name, node] : table) {
+    const std::string key = prefix + std::string(name.str());
+    if (const toml::table* sub = node.as_table(); sub && !sub->empty()) {
+      collect_unused(s, *sub, key + ".", out);
+    } else if (!s.used.count(key)) {
+      out.push_back({key, &node});
+    }
+  }
+}
+
+// A known key close to an unknown one (a typo): same table, small edit distance.
+std::string suggestion(const Config::State& s, const std::string& unknown) {
+  const std::size_t dot = unknown.rfind('.');
+  const std::string parent = dot == std::string::npos ? "" : unknown.substr(0, dot + 1);
+  const std::string leaf = unknown.substr(parent.size());
+  std::string best;
+  std::size_t best_distance = std::max<std::size_t>(2, leaf.size() / 3) + 1;
+  for (const std::string& known : s.used) {
+    if (known.compare(0, parent.size(), parent) != 0) continue;
+    const std::string known_leaf = known.substr(parent.size());
+    if (known_leaf.find('.') != std::string::npos) continue;
+    const std::size_t d = edit_distance(leaf, known_leaf);
+    if (d < best_distance) {
+      best_distance = d;
+      best = known;
+    }
+  }
+  return best;
+}
+
+}  // namespace
+
+std::vector<std::string> Config::unused_keys() const {
+  std::vector<Unknown> unknown;
+  collect_unused(*state_, state_->document, "", unknown);
+  std::vector<std::string> out;
+  for (const Unknown& u : unknown) out.push_back(u.key);
+  return out;
+}
+
+void Config::report_unused() const {
+  std::vector<Unknown> unknown;
+  collect_unused(*state_, state_->document, "", unknown);
+  if (unknown.empty()) return;
+  std::string message = fmt::format("{}: {} unknown key{} (misspelt, or not used by this program):", state_->source,
+                                    unknown.size(), unknown.size() == 1 ? "" : "s");
+  for (const Unknown& u : unknown) {
+    message += fmt::format("\n  {}: unknown key {}", location(*state_, u.key, u.node), u.key);
+    const std::string close = suggestion(*state_, u.key);
+    if (!close.empty()) message += fmt::format(" (did you mean {}?)", close);
+  }
+  throw InputError(message);
+}
+
+// ---------------------------------------------------------------------------------------------
+void Config::add_derived(std::string_view key, double value, std::string_view unit) {
+  insert_at(state_->resolved, key, toml::value<double>(value));
+  if (!unit.empty()) state_->units[std::string(key)] = std::string(unit);
+}
+
+void Config::add_derived(std::string_view key, std::int64_t value, std::string_view unit) {
+  insert_at(state_->resolved, key, toml::value<std::int64_t>(value));
+  if (!unit.empty()) state_->units[std::string(key)] = std::string(unit);
+}
+
+void Config::add_derived(std::string_view key, std::string_view value) {
+  insert_at(state_->resolved, key, toml::value<std::string>(std::string(value)));
+}
+
+namespace {
+
+std::string key_text(std::string_view key) { return is_bare_key(key) ? std::string(key) : quote(key); }
+
+// Values of a table first, then its sub-tables under [headers]: the layout people write by hand.
+void emit_table(const Config::State& s, const toml::table& table, const std::string& path, std::string& out) {
+  bool has_values = false;
+  for (const auto& [name, node] : table) has_values |= !node.is_table();
+  if (has_values && !path.empty()) out += fmt::format("\n[{}]\n", path);
+  for (const auto& [name, node] : table) {
+    if (node.is_table()) continue;
+    const std::string full = (path.empty() ? "" : path + ".") + std::string(name.str());
+    std::string line = fmt::format("{} = {}", key_text(name.str()), format_value(node));
+    if (auto it = s.units.find(full); it != s.units.end()) line += "  # " + it->second;
+    out += line + "\n";
+  }
+  for (const auto& [name, node] : table) {
+    if (!node.is_table()) continue;
+    const std::string sub = (path.empty() ? "" : path + ".") + key_text(name.str());
+    emit_table(s, *node.as_table(), sub, out);
+  }
+}
+
+}  // namespace
+
+std::string Config::resolved_toml() const {
+  std::string out = fmt::format("# Resolved configuration of {}: every parameter the run read, defaults filled in.\n",
+                                state_->source);
+  emit_table(*state_, state_->resolved, "", out);
+  return out;
+}
+
+}  // namespace trapdem
