@@ -1,0 +1,247 @@
+#include "io/checkpoint.hpp"
+
+#include <fmt/format.h>
+
+#include "dem/errors.hpp"
+#include "io/atomic_file.hpp"
+#include "io/hdf5_file.hpp"
+
+namespace trapdem {
+
+namespace {
+
+constexpr const char* kFormat = "trapdem-checkpoint";
+constexpr std::int64_t kVersion = 1;
+
+// ContactHistory as three columns, so that h5py users see plain arrays.
+void write_history(const Hdf5Group& g, const std::vector<ContactHistory>& history) {
+  std::vector<Vec3> tangential, rolling;
+  std::vector<std::uint32_t> flags;
+  tangential.reserve(history.size());
+  rolling.reserve(history.size());
+  flags.reserve(history.size());
+  for (const ContactHistory& h : history) {
+    tangential.push_back(h.tangential_spring);
+    rolling.push_back(h.rolling_spring);
+    flags.push_back(h.flags);
+  }
+  g.write_vec3s("tangential_spring", tangential, "m");
+  g.write_vec3s("rolling_spring", rolling, "N m");
+  g.write_uint32s("flags", flags);
+}
+
+std::vector<ContactHistory> read_history(const Hdf5Group& g) {
+  const std::vector<Vec3> tangential = g.read_vec3s("tangential_spring");
+  const std::vector<Vec3> rolling = g.read_vec3s("rolling_spring");
+  const std::vector<std::uint32_t> flags = g.read_uint32s("flags");
+  if (rolling.size() != tangential.size() || flags.size() != tangential.size())
+    throw FileError(fmt::format("{}: history columns differ in length", g.describe()));
+  std::vector<ContactHistory> history(tangential.size());
+  for (std::size_t k = 0; k < history.size(); ++k) history[k] = {tangential[k], rolling[k], flags[k]};
+  return history;
+}
+
+void write_particles(const Hdf5Group& g, const Particles& p) {
+  g.write_int64s("id", p.id);
+  g.write_doubles("radius", p.radius, "m");
+  g.write_doubles("mass", p.mass, "kg");
+  g.write_doubles("inv_mass", p.inv_mass, "1/kg");
+  g.write_doubles("inv_inertia", p.inv_inertia, "1/(kg m^2)");
+  g.write_vec3s("position", p.position, "m");
+  g.write_vec3s("velocity", p.velocity, "m/s");
+  g.write_vec3s("angular_velocity", p.angular_velocity, "rad/s");
+  g.write_vec3s("force", p.force, "N");
+  g.write_vec3s("torque", p.torque, "N m");
+  g.write_int3s("image", p.image);
+}
+
+Particles read_particles(const Hdf5Group& g) {
+  Particles p;
+  p.id = g.read_int64s("id");
+  p.radius = g.read_doubles("radius");
+  p.mass = g.read_doubles("mass");
+  p.inv_mass = g.read_doubles("inv_mass");
+  p.inv_inertia = g.read_doubles("inv_inertia");
+  p.position = g.read_vec3s("position");
+  p.velocity = g.read_vec3s("velocity");
+  p.angular_velocity = g.read_vec3s("angular_velocity");
+  p.force = g.read_vec3s("force");
+  p.torque = g.read_vec3s("torque");
+  p.image = g.read_int3s("image");
+  const std::size_t n = p.id.size();
+  for (std::size_t size : {p.radius.size(), p.mass.size(), p.inv_mass.size(), p.inv_inertia.size(),
+                           p.position.size(), p.velocity.size(), p.angular_velocity.size(), p.force.size(),
+                           p.torque.size(), p.image.size()}) {
+    if (size != n)
+      throw FileError(fmt::format("{}: particle arrays differ in length ({} ids, an array of {})", g.describe(), n, size));
+  }
+  return p;
+}
+
+void write_walls(const Hdf5Group& g, const std::vector<WallState>& walls) {
+  std::vector<std::string> names;
+  std::vector<Vec3> origin, displacement, force, torque, velocity;
+  for (const WallState& w : walls) {
+    names.push_back(w.name);
+    origin.push_back(w.origin);
+    displacement.push_back(w.displacement);
+    force.push_back(w.force);
+    torque.push_back(w.torque);
+    velocity.push_back(w.current_velocity);
+  }
+  g.write_strings("name", names);
+  g.write_vec3s("origin", origin, "m");
+  g.write_vec3s("displacement", displacement, "m");
+  g.write_vec3s("force", force, "N");
+  g.write_vec3s("torque", torque, "N m");
+  g.write_vec3s("current_velocity", velocity, "m/s");
+}
+
+std::vector<WallState> read_walls(const Hdf5Group& g) {
+  const std::vector<std::string> names = g.read_strings("name");
+  const std::vector<Vec3> origin = g.read_vec3s("origin"), displacement = g.read_vec3s("displacement"),
+                          force = g.read_vec3s("force"), torque = g.read_vec3s("torque"),
+                          velocity = g.read_vec3s("current_velocity");
+  const std::size_t n = names.size();
+  if (origin.size() != n || displacement.size() != n || force.size() != n || torque.size() != n ||
+      velocity.size() != n)
+    throw FileError(fmt::format("{}: wall arrays differ in length", g.describe()));
+  std::vector<WallState> walls(n);
+  for (std::size_t k = 0; k < n; ++k) walls[k] = {names[k], origin[k], displacement[k], force[k], torque[k], velocity[k]};
+  return walls;
+}
+
+}  // namespace
+
+Checkpoint capture_checkpoint(const Simulation& simulation, std::map<std::string, std::string> metadata) {
+  Checkpoint c;
+  c.particles = simulation.particles();
+  c.lists = simulation.list_state();
+  c.time = simulation.time();
+  c.time_step = simulation.time_step();
+  c.stats = simulation.stats();
+  for (const Wall& w : simulation.walls())
+    c.walls.push_back({w.name, w.origin, w.displacement, w.force, w.torque, w.current_velocity});
+  c.metadata = std::move(metadata);
+  return c;
+}
+
+void write_checkpoint(const std::filesystem::path& path, const Checkpoint& c) {
+  write_atomically(path, [&](const std::filesystem::path& temporary) {
+    Hdf5File file = Hdf5File::create(temporary);
+    file.set_string_attribute("format", kFormat);
+    file.set_int_attribute("version", kVersion);
+    file.set_double_attribute("time", c.time);
+    file.set_double_attribute("time_step", c.time_step);
+    file.set_int_attribute("steps", c.stats.steps);
+    file.set_int_attribute("rebuilds", c.stats.rebuilds);
+    file.set_int_attribute("rebuilds_since_reorder", c.lists.rebuilds_since_reorder);
+
+    write_particles(file.create_group("particles"), c.particles);
+
+    const Hdf5Group pairs = file.create_group("pairs");
+    pairs.write_uint32s("first", c.lists.pairs.first);
+    pairs.write_uint32s("partner", c.lists.pairs.partner);
+    pairs.write_uint32s("incident_first", c.lists.pairs.incident_first);
+    pairs.write_uint32s("incident_pair", c.lists.pairs.incident_pair);
+    write_history(pairs, c.lists.pairs.history);
+
+    const Hdf5Group wall_list = file.create_group("wall_candidates");
+    wall_list.write_uint32s("first", c.lists.walls.first);
+    wall_list.write_uint32s("wall", c.lists.walls.wall);
+    wall_list.write_vec3s("force", c.lists.walls.force, "N");
+    write_history(wall_list, c.lists.walls.history);
+
+    const Hdf5Group build = file.create_group("build");
+    build.write_vec3s("position_at_build", c.lists.position_at_build, "m");
+    build.write_vec3s("wall_displacement_at_build", c.lists.wall_displacement_at_build, "m");
+
+    write_walls(file.create_group("walls"), c.walls);
+
+    const Hdf5Group metadata = file.create_group("metadata");
+    for (const auto& [key, value] : c.metadata) metadata.set_string_attribute(key, value);
+    file.close();
+  });
+}
+
+Checkpoint read_checkpoint(const std::filesystem::path& path) {
+  Hdf5File file = Hdf5File::open_read(path);
+  if (!file.has_attribute("format") || file.string_attribute("format") != kFormat)
+    throw FileError(fmt::format("{}: not a trapdem checkpoint (no format = \"{}\" attribute)", path.string(), kFormat));
+  const std::int64_t version = file.int_attribute("version");
+  if (version != kVersion)
+    throw FileError(fmt::format("{}: checkpoint version {} is not supported (this build reads version {})",
+                                path.string(), version, kVersion));
+  Checkpoint c;
+  c.time = file.double_attribute("time");
+  c.time_step = file.double_attribute("time_step");
+  c.stats.steps = file.int_attribute("steps");
+  c.stats.rebuilds = file.int_attribute("rebuilds");
+  c.lists.rebuilds_since_reorder = file.int_attribute("rebuilds_since_reorder");
+
+  c.particles = read_particles(file.group("particles"));
+
+  const Hdf5Group pairs = file.group("pairs");
+  c.lists.pairs.first = pairs.read_uint32s("first");
+  c.lists.pairs.partner = pairs.read_uint32s("partner");
+  c.lists.pairs.incident_first = pairs.read_uint32s("incident_first");
+  c.lists.pairs.incident_pair = pairs.read_uint32s("incident_pair");
+  c.lists.pairs.history = read_history(pairs);
+
+  const Hdf5Group wall_list = file.group("wall_candidates");
+  c.lists.walls.first = wall_list.read_uint32s("first");
+  c.lists.walls.wall = wall_list.read_uint32s("wall");
+  c.lists.walls.force = wall_list.read_vec3s("force");
+  c.lists.walls.history = read_history(wall_list);
+
+  const Hdf5Group build = file.group("build");
+  c.lists.position_at_build = build.read_vec3s("position_at_build");
+  c.lists.wall_displacement_at_build = build.read_vec3s("wall_displacement_at_build");
+
+  c.walls = read_walls(file.group("walls"));
+
+  const Hdf5Group metadata = file.group("metadata");
+  for (const std::string& key : metadata.attribute_names()) c.metadata[key] = metadata.string_attribute(key);
+  return c;
+}
+
+void restore_checkpoint(Simulation& simulation, Checkpoint c) {
+  const std::vector<Wall>& walls = simulation.walls();
+  if (walls.size() != c.walls.size())
+    throw InputError(fmt::format("checkpoint: it holds {} walls, the simulation has {}; build the simulation as the "
+                                 "checkpointed run did",
+                                 c.walls.size(), walls.size()));
+  for (std::size_t k = 0; k < walls.size(); ++k) {
+    if (walls[k].name != c.walls[k].name)
+      throw InputError(fmt::format("checkpoint: wall {} is '{}' in the checkpoint but '{}' in the simulation", k,
+                                   c.walls[k].name, walls[k].name));
+  }
+  if (simulation.time_step() != c.time_step)
+    throw InputError(fmt::format("checkpoint: time step {} s differs from the simulation's {} s; the resumed run would "
+                                 "not continue the checkpointed one",
+                                 c.time_step, simulation.time_step()));
+  const std::size_t n = c.particles.size();
+  // Lists that do not match the particles: particles were added after the last step and the
+  // next step rebuilds. Assigning the particles afterwards (particles_mutable) leaves them invalid.
+  const bool lists_match = c.lists.position_at_build.size() == n && c.lists.pairs.first.size() == n + 1;
+
+  for (std::size_t k = 0; k < walls.size(); ++k) {
+    Wall& w = simulation.wall(k);
+    w.origin = c.walls[k].origin;
+    w.displacement = c.walls[k].displacement;
+    w.force = c.walls[k].force;
+    w.torque = c.walls[k].torque;
+    w.current_velocity = c.walls[k].current_velocity;
+  }
+  // A checkpoint of a simulation that never stepped: the fresh one is already in that state, with
+  // its set-up (initial forces) still to come.
+  if (c.stats.steps == 0 && c.stats.rebuilds == 0) {
+    simulation.particles_mutable() = std::move(c.particles);
+    return;
+  }
+  simulation.particles_mutable() = std::move(c.particles);
+  simulation.restore(c.time, c.stats, std::move(c.lists));
+  if (!lists_match) simulation.particles_mutable();  // marks the lists for a rebuild at the next step
+}
+
+}  // namespace trapdem

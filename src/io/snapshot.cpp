@@ -1,0 +1,191 @@
+#include "io/snapshot.hpp"
+
+#include <fmt/format.h>
+
+#include "io/atomic_file.hpp"
+#include "io/hdf5_file.hpp"
+
+namespace trapdem {
+
+namespace fs = std::filesystem;
+
+namespace {
+
+constexpr const char* kFormat = "trapdem-snapshots";
+constexpr std::int64_t kVersion = 1;
+constexpr const char* kRoot = "snapshots";
+
+std::string group_name(std::size_t index) { return fmt::format("{:06d}", index); }
+
+std::string xml_escape(const std::string& text) {
+  std::string out;
+  for (char c : text) {
+    switch (c) {
+      case '&': out += "&amp;"; break;
+      case '<': out += "&lt;"; break;
+      case '>': out += "&gt;"; break;
+      case '"': out += "&quot;"; break;
+      case '\'': out += "&apos;"; break;
+      default: out += c;
+    }
+  }
+  return out;
+}
+
+double attribute_or(const Hdf5Group& g, const char* name, double fallback) {
+  return g.has_attribute(name) ? g.double_attribute(name) : fallback;
+}
+
+SnapshotInfo info_of(const Hdf5Group& g, const std::string& name) {
+  SnapshotInfo info;
+  info.name = name;
+  info.time = attribute_or(g, "time", 0.0);
+  info.stage = g.has_attribute("stage") ? g.string_attribute("stage") : "";
+  info.trapdoor_displacement = attribute_or(g, "trapdoor_displacement", 0.0);
+  info.step = g.has_attribute("step") ? g.int_attribute("step") : 0;
+  info.particle_count = g.dataset_length("id");
+  return info;
+}
+
+std::vector<SnapshotInfo> list_in(const Hdf5File& file) {
+  std::vector<SnapshotInfo> out;
+  if (!file.has(kRoot)) return out;
+  const Hdf5Group root = file.group(kRoot);
+  for (const std::string& name : root.children()) out.push_back(info_of(root.group(name), name));
+  return out;
+}
+
+fs::path xdmf_path_of(const fs::path& h5_path) {
+  fs::path xmf = h5_path;
+  xmf.replace_extension(".xmf");
+  return xmf;
+}
+
+}  // namespace
+
+Snapshot make_snapshot(const Particles& p, double time, std::string stage, double trapdoor_displacement,
+                       std::int64_t step) {
+  Snapshot s;
+  s.time = time;
+  s.stage = std::move(stage);
+  s.trapdoor_displacement = trapdoor_displacement;
+  s.step = step;
+  s.id = p.id;
+  s.position = p.position;
+  s.velocity = p.velocity;
+  s.angular_velocity = p.angular_velocity;
+  s.radius = p.radius;
+  s.image = p.image;
+  return s;
+}
+
+std::string append_snapshot(const fs::path& h5_path, const Snapshot& s) {
+  const std::size_t n = s.size();
+  if (s.position.size() != n || s.velocity.size() != n || s.angular_velocity.size() != n || s.radius.size() != n ||
+      (!s.image.empty() && s.image.size() != n))
+    throw FileError(fmt::format("{}: snapshot arrays differ in length ({} ids)", h5_path.string(), n));
+  std::string name;
+  modify_atomically(h5_path, [&](const fs::path& temporary) {
+    std::error_code ec;
+    const bool fresh = !fs::exists(temporary, ec);
+    Hdf5File file = fresh ? Hdf5File::create(temporary) : Hdf5File::open_read_write(temporary);
+    if (fresh) {
+      file.set_string_attribute("format", kFormat);
+      file.set_int_attribute("version", kVersion);
+    }
+    const Hdf5Group root = file.has(kRoot) ? file.group(kRoot) : file.create_group(kRoot);
+    name = group_name(root.children().size());
+    const Hdf5Group g = root.create_group(name);
+    g.set_double_attribute("time", s.time);
+    g.set_string_attribute("stage", s.stage);
+    g.set_double_attribute("trapdoor_displacement", s.trapdoor_displacement);
+    g.set_int_attribute("step", s.step);
+    g.write_int64s("id", s.id);
+    g.write_vec3s("position", s.position, "m");
+    g.write_vec3s("velocity", s.velocity, "m/s");
+    g.write_vec3s("angular_velocity", s.angular_velocity, "rad/s");
+    g.write_doubles("radius", s.radius, "m");
+    if (s.image.empty()) g.write_int3s("image", std::vector<Int3>(n));
+    else g.write_int3s("image", s.image);
+    file.close();
+  });
+  write_snapshot_xdmf(h5_path);
+  return name;
+}
+
+std::vector<SnapshotInfo> list_snapshots(const fs::path& h5_path) { return list_in(Hdf5File::open_read(h5_path)); }
+
+Snapshot read_snapshot(const fs::path& h5_path, const std::string& name) {
+  const Hdf5File file = Hdf5File::open_read(h5_path);
+  const Hdf5Group g = file.group(kRoot).group(name);
+  const SnapshotInfo info = info_of(g, name);
+  Snapshot s;
+  s.time = info.time;
+  s.stage = info.stage;
+  s.trapdoor_displacement = info.trapdoor_displacement;
+  s.step = info.step;
+  s.id = g.read_int64s("id");
+  s.position = g.read_vec3s("position");
+  s.radius = g.read_doubles("radius");
+  const std::size_t n = s.id.size();
+  s.velocity = g.has("velocity") ? g.read_vec3s("velocity") : std::vector<Vec3>(n);
+  s.angular_velocity = g.has("angular_velocity") ? g.read_vec3s("angular_velocity") : std::vector<Vec3>(n);
+  s.image = g.has("image") ? g.read_int3s("image") : std::vector<Int3>(n);
+  for (std::size_t size : {s.position.size(), s.radius.size(), s.velocity.size(), s.angular_velocity.size(),
+                           s.image.size()}) {
+    if (size != n)
+      throw FileError(fmt::format("{}: datasets differ in length ({} ids, a dataset of {})", g.describe(), n, size));
+  }
+  return s;
+}
+
+std::vector<Snapshot> read_snapshots(const fs::path& h5_path) {
+  std::vector<Snapshot> out;
+  for (const SnapshotInfo& info : list_snapshots(h5_path)) out.push_back(read_snapshot(h5_path, info.name));
+  return out;
+}
+
+std::string snapshot_xdmf(const std::string& h5_file_name, const std::vector<SnapshotInfo>& snapshots) {
+  const std::string file = xml_escape(h5_file_name);
+  std::string x;
+  x += "<?xml version=\"1.0\" ?>\n";
+  x += "<!-- trapdem particle snapshots; the data live in " + file + " (see docs/output.md) -->\n";
+  x += "<Xdmf Version=\"3.0\">\n  <Domain>\n";
+  x += "    <Grid Name=\"particles\" GridType=\"Collection\" CollectionType=\"Temporal\">\n";
+  for (const SnapshotInfo& s : snapshots) {
+    if (s.particle_count == 0) continue;
+    const std::size_t n = s.particle_count;
+    const std::string base = fmt::format("{}:/{}/{}", file, kRoot, s.name);
+    auto item = [&](const char* dataset, int columns, const char* type) {
+      const std::string dims = columns > 1 ? fmt::format("{} {}", n, columns) : fmt::format("{}", n);
+      return fmt::format(
+          "          <DataItem Dimensions=\"{}\" NumberType=\"{}\" Precision=\"8\" Format=\"HDF\">{}/{}</DataItem>\n",
+          dims, type, base, dataset);
+    };
+    auto attribute = [&](const char* name, const char* kind, int columns, const char* type) {
+      return fmt::format("        <Attribute Name=\"{}\" AttributeType=\"{}\" Center=\"Node\">\n{}        </Attribute>\n",
+                         name, kind, item(name, columns, type));
+    };
+    x += fmt::format("      <Grid Name=\"{}\" GridType=\"Uniform\">\n", s.name);
+    x += fmt::format("        <Time Value=\"{}\"/>\n", s.time);
+    x += fmt::format("        <Information Name=\"stage\" Value=\"{}\"/>\n", xml_escape(s.stage));
+    x += fmt::format("        <Information Name=\"trapdoor_displacement\" Value=\"{}\"/>\n", s.trapdoor_displacement);
+    x += fmt::format("        <Information Name=\"step\" Value=\"{}\"/>\n", s.step);
+    x += fmt::format("        <Topology TopologyType=\"Polyvertex\" NumberOfElements=\"{}\" NodesPerElement=\"1\"/>\n", n);
+    x += "        <Geometry GeometryType=\"XYZ\">\n" + item("position", 3, "Float") + "        </Geometry>\n";
+    x += attribute("radius", "Scalar", 1, "Float");
+    x += attribute("id", "Scalar", 1, "Int");
+    x += attribute("velocity", "Vector", 3, "Float");
+    x += attribute("angular_velocity", "Vector", 3, "Float");
+    x += "      </Grid>\n";
+  }
+  x += "    </Grid>\n  </Domain>\n</Xdmf>\n";
+  return x;
+}
+
+void write_snapshot_xdmf(const fs::path& h5_path) {
+  const std::vector<SnapshotInfo> snapshots = list_snapshots(h5_path);
+  write_text_atomically(xdmf_path_of(h5_path), snapshot_xdmf(h5_path.filename().string(), snapshots));
+}
+
+}  // namespace trapdem

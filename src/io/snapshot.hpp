@@ -1,0 +1,67 @@
+#pragma once
+// Particle snapshots for analysis and viewing: snapshots.h5 holds one group per snapshot
+// (/snapshots/000000, /snapshots/000001, ...) and snapshots.xmf, its XDMF 3 companion, lets
+// ParaView open the file as a time series of particles. Layout: docs/output.md.
+//
+// Never a broken file: each append copies snapshots.h5 to a temporary sibling, adds the new group
+// there, syncs it and renames it over the old file (io/atomic_file.hpp); the XDMF file is then
+// rewritten the same way. A crash at any point leaves the previous complete snapshots.h5.
+#include <cstdint>
+#include <filesystem>
+#include <string>
+#include <vector>
+
+#include "dem/particles.hpp"
+#include "dem/vec3.hpp"
+
+namespace trapdem {
+
+struct Snapshot {
+  double time = 0.0;                    // s, simulated
+  std::string stage;                    // "pluviation", "settling", "spin-up", "lowering", ...
+  double trapdoor_displacement = 0.0;   // m, downward travel of the trapdoor (positive down)
+  std::int64_t step = 0;                // engine step count
+  std::vector<std::int64_t> id;
+  std::vector<Vec3> position;           // m (wrapped into the domain on periodic axes)
+  std::vector<Vec3> velocity;           // m/s
+  std::vector<Vec3> angular_velocity;   // rad/s
+  std::vector<double> radius;           // m
+  std::vector<Int3> image;              // periodic images crossed: unwrapped = position + image * length
+
+  std::size_t size() const { return id.size(); }
+};
+
+Snapshot make_snapshot(const Particles& particles, double time, std::string stage, double trapdoor_displacement,
+                       std::int64_t step);
+
+// One line of the file's index (no particle data).
+struct SnapshotInfo {
+  std::string name;                     // group name, "000003"
+  double time = 0.0;                    // s
+  std::string stage;
+  double trapdoor_displacement = 0.0;   // m
+  std::int64_t step = 0;
+  std::size_t particle_count = 0;
+};
+
+// Appends a snapshot to `h5_path` (creating the file if absent) and rewrites the XDMF companion
+// (same name with the .xmf extension). Returns the new snapshot's group name. Throws FileError
+// naming the path; the previous files stay as they were.
+std::string append_snapshot(const std::filesystem::path& h5_path, const Snapshot& snapshot);
+
+// Reading (for the analysis; accepts files written by other tools that follow docs/output.md:
+// id, position and radius are required, velocity, angular_velocity and image default to zero,
+// missing attributes to 0 / "").
+std::vector<SnapshotInfo> list_snapshots(const std::filesystem::path& h5_path);
+Snapshot read_snapshot(const std::filesystem::path& h5_path, const std::string& name);
+std::vector<Snapshot> read_snapshots(const std::filesystem::path& h5_path);
+
+// The XDMF 3 text for `snapshots` stored in the HDF5 file named `h5_file_name` (relative to the
+// .xmf file's folder): a temporal collection of Polyvertex grids with attributes radius, id,
+// velocity and angular_velocity. Snapshots without particles are left out (ParaView rejects
+// empty grids).
+std::string snapshot_xdmf(const std::string& h5_file_name, const std::vector<SnapshotInfo>& snapshots);
+// Writes snapshot_xdmf(...) for the file at h5_path to h5_path with the .xmf extension, atomically.
+void write_snapshot_xdmf(const std::filesystem::path& h5_path);
+
+}  // namespace trapdem
