@@ -13,18 +13,35 @@ namespace {
 constexpr double kPole = -0.26794919243112270;  // sqrt(3) - 2
 constexpr double kGain = 6.0;
 
-// Unser's causal / anti-causal recursion with mirror-symmetric boundaries, applied in place to
-// `count` samples spaced `stride` apart (Unser 1999, Box 2). The causal start is the truncated
-// sum over the mirrored signal (z^k < 1e-16 after 28 terms).
-void prefilter_line(double* s, int count, std::ptrdiff_t stride) {
-  for (int k = 0; k < count; ++k) s[k * stride] *= kGain;
-  const int horizon = std::min(count, 30);
-  double zk = kPole;
-  double sum = s[0];
-  for (int k = 1; k < horizon; ++k) {
-    sum += zk * s[k * stride];
-    zk *= kPole;
+// Number of terms of the truncated causal start: |z|^30 < 1e-17.
+constexpr int kHorizon = 30;
+
+// Weights w_k of the causal start c+(0) = sum_k w_k s(k) for mirror-symmetric boundaries
+// (Unser 1999, Box 2; Thevenaz, Blu & Unser 2000): z^k truncated for long lines, the exact
+// finite sum (the mirrored signal folded back) for lines shorter than the horizon.
+std::vector<double> causal_start_weights(int count) {
+  std::vector<double> w(count, 0.0);
+  if (count > kHorizon) {
+    double zk = 1.0;
+    for (int k = 0; k < kHorizon; ++k, zk *= kPole) w[k] = zk;
+    return w;
   }
+  // c+(0) = [s(0) + z^(n-1) s(n-1) + sum_{k=1}^{n-2} (z^k + z^(2n-2-k)) s(k)] / (1 - z^(2n-2)).
+  const int n = count;
+  const double denominator = 1.0 - std::pow(kPole, 2 * n - 2);
+  w[0] = 1.0 / denominator;
+  w[n - 1] = std::pow(kPole, n - 1) / denominator;
+  for (int k = 1; k < n - 1; ++k) w[k] = (std::pow(kPole, k) + std::pow(kPole, 2 * n - 2 - k)) / denominator;
+  return w;
+}
+
+// Unser's causal / anti-causal recursion with mirror-symmetric boundaries, applied in place to
+// `count` samples spaced `stride` apart (Unser 1999, Box 2).
+void prefilter_line(double* s, int count, std::ptrdiff_t stride, const std::vector<double>& start) {
+  for (int k = 0; k < count; ++k) s[k * stride] *= kGain;
+  double sum = 0.0;
+  for (int k = 0; k < count; ++k)
+    if (start[k] != 0.0) sum += start[k] * s[k * stride];
   s[0] = sum;
   for (int k = 1; k < count; ++k) s[k * stride] += kPole * s[(k - 1) * stride];
   const double last = s[(count - 1) * stride];
@@ -38,13 +55,12 @@ void prefilter_line(double* s, int count, std::ptrdiff_t stride) {
 void prefilter_columns(std::vector<double>& c, int width, int height) {
   auto row = [&](int r) { return c.data() + static_cast<std::size_t>(r) * width; };
   for (double& v : c) v *= kGain;
-  const int horizon = std::min(height, 30);
-  std::vector<double> sum(row(0), row(0) + width);
-  double zk = kPole;
-  for (int r = 1; r < horizon; ++r) {
+  const std::vector<double> start = causal_start_weights(height);
+  std::vector<double> sum(width, 0.0);
+  for (int r = 0; r < height; ++r) {
+    if (start[r] == 0.0) continue;
     const double* src = row(r);
-    for (int x = 0; x < width; ++x) sum[x] += zk * src[x];
-    zk *= kPole;
+    for (int x = 0; x < width; ++x) sum[x] += start[r] * src[x];
   }
   std::copy(sum.begin(), sum.end(), row(0));
   for (int r = 1; r < height; ++r) {
@@ -92,7 +108,8 @@ BSplineImage make_bspline_image(const cv::Mat& intensity) {
     const double* src = intensity.ptr<double>(r);
     std::copy(src, src + w, c.data() + static_cast<std::size_t>(r) * w);
   }
-  for (int r = 0; r < h; ++r) prefilter_line(c.data() + static_cast<std::size_t>(r) * w, w, 1);
+  const std::vector<double> start = causal_start_weights(w);
+  for (int r = 0; r < h; ++r) prefilter_line(c.data() + static_cast<std::size_t>(r) * w, w, 1, start);
   prefilter_columns(c, w, h);
 
   // With whole-sample mirror boundaries the coefficients are mirror-symmetric too:

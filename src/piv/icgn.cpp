@@ -80,6 +80,10 @@ IcgnResult refine_subset(const ReferenceSubset& reference, const BSplineImage& c
       return out;
     }
     out.iterations = iteration + 1;
+    if (std::hypot(out.p.u - start.u, out.p.v - start.v) > settings.max_wander) {
+      out.outcome = IcgnOutcome::wandered;
+      return out;
+    }
     if (update_norm(dp, half_subset) < settings.convergence_tolerance) {
       out.outcome = IcgnOutcome::converged;
       return out;

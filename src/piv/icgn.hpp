@@ -15,6 +15,8 @@ namespace trapdem {
 struct IcgnSettings {
   double convergence_tolerance = 1e-3;  // px, on update_norm(dp, L / 2)
   int max_iterations = 50;
+  double max_wander = 8.0;  // px: an iterate whose (u, v) moves farther than this from the start has
+                            // diverged (starts are within a pixel or two of the answer)
 };
 
 enum class IcgnOutcome {
@@ -22,7 +24,8 @@ enum class IcgnOutcome {
   iteration_cap,   // max_iterations reached first
   left_image,      // a warped subset point fell outside the current image
   flat_target,     // the warped subset in the current image has no intensity variation
-  singular_update  // W(dp) could not be inverted (a diverging iteration)
+  singular_update, // W(dp) could not be inverted (a diverging iteration)
+  wandered         // (u, v) moved more than max_wander from the start
 };
 
 struct IcgnResult {

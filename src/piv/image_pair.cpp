@@ -71,11 +71,15 @@ std::vector<PairSolution> solve_image_pair(const SubsetGrid& grid, const Referen
   std::vector<PairSolution> solution(n);
   auto accepted = [&](std::size_t i) { return is_accepted(solution[i], refs.textured[i], settings.min_valid_zncc); };
 
-  // 1. From the given starts, every subset alone.
+  // 1. From the given starts, every subset alone. A start far from the truth can converge to a
+  //    wrong local minimum with a middling ZNCC, so only results at or above the leapfrog
+  //    threshold are kept; the others are found again by seeds and propagation.
 #pragma omp parallel for schedule(dynamic, 16) num_threads(threads)
   for (std::ptrdiff_t i = 0; i < count; ++i) {
     if (!refs.subset[i] || !start[i]) continue;
-    keep_better(solution[i], refine_subset(*refs.subset[i], current.spline, *start[i], settings.icgn));
+    const IcgnResult r = refine_subset(*refs.subset[i], current.spline, *start[i], settings.icgn);
+    const bool trusted = r.outcome == IcgnOutcome::converged && r.zncc >= settings.reference_update_zncc;
+    if (trusted || r.outcome == IcgnOutcome::left_image) keep_better(solution[i], r);
   }
 
   // 2. Seeds: integer-pixel ZNCC search, then IC-GN, for candidates not yet accepted.
@@ -85,7 +89,7 @@ std::vector<PairSolution> solve_image_pair(const SubsetGrid& grid, const Referen
       continue;
     const IntegerMatch match = integer_pixel_search(reference.intensity32, current.intensity32, refs.subset[i]->centre,
                                                     grid.subset_size, prediction[i], settings.search_radius);
-    if (!match.found) continue;
+    if (!match.found || match.zncc < settings.min_valid_zncc) continue;  // no credible match in the window
     WarpParameters p;
     p.u = match.du;
     p.v = match.dv;

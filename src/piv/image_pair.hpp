@@ -1,9 +1,11 @@
 #pragma once
 // One image pair: every subset of a reference image matched in the current image.
 // 1. Subsets with a start (the previous image's warp, extrapolated) are refined by IC-GN, all in
-//    parallel (OpenMP; each subset alone, so the result does not depend on the thread count).
+//    parallel (OpenMP; each subset alone, so the result does not depend on the thread count);
+//    kept only if converged with ZNCC >= reference_update_zncc (or if the subset left the image).
 // 2. Seed candidates (every seed_spacing-th subset along each axis) not yet accepted get an
-//    integer-pixel ZNCC search around their prediction, then IC-GN; in parallel.
+//    integer-pixel ZNCC search around their prediction (a match below min_valid_zncc is not
+//    credible and is dropped), then IC-GN; in parallel.
 // 3. Reliability-guided propagation (Pan 2009, Appl. Opt. 48(8): 1535-1542; as in GeoPIV-RG, Stanier
 //    et al. 2016): the accepted subset with the highest ZNCC is taken next and each neighbour not
 //    yet accepted is refined from its warp shifted to the neighbour's centre; accepted neighbours

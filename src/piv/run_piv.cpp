@@ -72,19 +72,21 @@ std::vector<SubsetMeasurement> measurements_of(const std::vector<PairSolution>& 
   return out;
 }
 
-// Leapfrog criterion: some textured subset that stayed in the image fell below the threshold.
+// Leapfrog criterion: some textured subset that was matched in the image (not left, lost or
+// never reached) fell below the threshold or did not converge.
 bool needs_reference_update(const std::vector<SubsetMeasurement>& m, const PivSettings& settings) {
   for (const auto& s : m) {
     if (s.status == SubsetStatus::lost || s.status == SubsetStatus::left_image ||
-        s.status == SubsetStatus::low_texture)
+        s.status == SubsetStatus::low_texture || !std::isfinite(s.zncc))
       continue;
     if (s.status != SubsetStatus::valid || s.zncc < settings.reference_update_zncc) return true;
   }
   return false;
 }
 
-// A measurement that can place its subset in a new reference image.
-bool can_become_reference(const SubsetMeasurement& m) {
+// A measurement that may predict the next image and place its subset in a new reference image:
+// valid, or converged on a poorly textured subset (which has no better estimate).
+bool is_trusted(const SubsetMeasurement& m) {
   return (m.status == SubsetStatus::valid || m.status == SubsetStatus::low_texture) && std::isfinite(m.u) &&
          std::isfinite(m.v);
 }
@@ -150,18 +152,25 @@ PivResult run_piv(std::size_t count, const std::function<GreyImage(std::size_t)>
       std::vector<cv::Point2d> prediction(n);
       for (std::size_t i = 0; i < n; ++i) {
         const SubsetMeasurement& a = last.subset[i];
-        if (!std::isfinite(a.u)) continue;
+        // Only a trusted measurement predicts the next one.
+        if (!is_trusted(a)) continue;
         // The last increment of total displacement, if image k - 2 had the subset too: a steady
         // motion continues (linear extrapolation).
-        cv::Point2d increment(0.0, 0.0);
-        if (before_last && std::isfinite(before_last->subset[i].u))
-          increment = {a.u - before_last->subset[i].u, a.v - before_last->subset[i].v};
+        const bool has_increment = before_last && is_trusted(before_last->subset[i]);
+        const cv::Point2d increment =
+            has_increment ? cv::Point2d(a.u - before_last->subset[i].u, a.v - before_last->subset[i].v)
+                          : cv::Point2d(0.0, 0.0);
+        // Image k - 1 measured against this reference: its warp plus the increment. Image k - 1
+        // is the reference itself: the increment alone if known, else no start (seeds and the
+        // reliability-guided propagation find the subset).
+        const bool measured_against_reference = last.reference == ref.index && k - 1 != ref.index;
+        prediction[i] = cv::Point2d(a.u - ref.total[i].x, a.v - ref.total[i].y) + increment;
+        if (!measured_against_reference && !has_increment) continue;
         WarpParameters p;
-        if (last.reference == ref.index) p = a.relative;  // same reference: its warp
-        p.u = a.u - ref.total[i].x + increment.x;
-        p.v = a.v - ref.total[i].y + increment.y;
+        if (measured_against_reference) p = a.relative;
+        p.u = prediction[i].x;
+        p.v = prediction[i].y;
         start[i] = p;
-        prediction[i] = {p.u, p.v};
       }
       const std::vector<PairSolution> solution =
           solve_image_pair(grid, ref.subsets, *ref.image, *current, start, prediction, settings);
@@ -173,7 +182,7 @@ PivResult run_piv(std::size_t count, const std::function<GreyImage(std::size_t)>
       // Leapfrog: image k - 1 becomes the reference; subsets it did not track are lost.
       std::vector<cv::Point2d> total(n);
       for (std::size_t i = 0; i < n; ++i) {
-        alive[i] = alive[i] && can_become_reference(last.subset[i]);
+        alive[i] = alive[i] && is_trusted(last.subset[i]);
         total[i] = alive[i] ? cv::Point2d(last.subset[i].u, last.subset[i].v) : cv::Point2d(0.0, 0.0);
       }
       ref = make_reference(k - 1, previous, grid, total, alive, settings);
