@@ -10,6 +10,7 @@
 #include <vector>
 
 #include "dem/simulation.hpp"
+#include "io/file_error.hpp"
 
 namespace trapdem {
 

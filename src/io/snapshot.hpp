@@ -13,6 +13,7 @@
 
 #include "dem/particles.hpp"
 #include "dem/vec3.hpp"
+#include "io/file_error.hpp"
 
 namespace trapdem {
 

@@ -1,0 +1,123 @@
+// snapshots.h5 and its XDMF companion: appends keep earlier snapshots, read back exactly, a failed
+// append leaves the previous file, and the XDMF references every non-empty snapshot.
+#include "io/snapshot.hpp"
+
+#include <gtest/gtest.h>
+
+#include "io/hdf5_file.hpp"
+#include "io_test_support.hpp"
+
+using namespace trapdem;
+using namespace trapdem::io_testing;
+
+namespace {
+
+Particles some_particles(std::size_t n, double shift) {
+  Particles p;
+  for (std::size_t i = 0; i < n; ++i)
+    p.add(std::int64_t(100 + i), {0.001 * double(i) + shift, -0.002 * double(i), 0.5 + shift}, 0.001 + 1e-5 * double(i),
+          2500.0, {0.1 * double(i), 0.0, -shift}, {0.0, 3.0 * double(i), 0.0});
+  if (n > 1) p.image[1] = {0, -1, 0};
+  return p;
+}
+
+void expect_same(const Snapshot& a, const Snapshot& b) {
+  EXPECT_EQ(a.time, b.time);
+  EXPECT_EQ(a.stage, b.stage);
+  EXPECT_EQ(a.trapdoor_displacement, b.trapdoor_displacement);
+  EXPECT_EQ(a.step, b.step);
+  EXPECT_EQ(a.id, b.id);
+  EXPECT_EQ(a.radius, b.radius);
+  ASSERT_EQ(a.position.size(), b.position.size());
+  for (std::size_t i = 0; i < a.size(); ++i) {
+    EXPECT_EQ(a.position[i], b.position[i]);
+    EXPECT_EQ(a.velocity[i], b.velocity[i]);
+    EXPECT_EQ(a.angular_velocity[i], b.angular_velocity[i]);
+    EXPECT_EQ(a.image[i].y, b.image[i].y);
+  }
+}
+
+std::size_t count(const std::string& text, const std::string& part) {
+  std::size_t n = 0;
+  for (auto at = text.find(part); at != std::string::npos; at = text.find(part, at + 1)) ++n;
+  return n;
+}
+
+}  // namespace
+
+TEST(Snapshots, AppendListReadAndXdmf) {
+  ScratchDir dir;
+  const auto path = dir / "snapshots.h5";
+  const Snapshot empty = make_snapshot(Particles{}, 0.0, "pluviation", 0.0, 0);
+  const Snapshot first = make_snapshot(some_particles(5, 0.0), 1.5, "settling", 0.0, 1500);
+  const Snapshot second = make_snapshot(some_particles(7, 0.01), 2.25, "lowering & <done>", 0.005, 2250);
+  EXPECT_EQ(append_snapshot(path, empty), "000000");
+  EXPECT_EQ(append_snapshot(path, first), "000001");
+  EXPECT_EQ(append_snapshot(path, second), "000002");
+
+  const std::vector<SnapshotInfo> list = list_snapshots(path);
+  ASSERT_EQ(list.size(), 3u);
+  EXPECT_EQ(list[1].name, "000001");
+  EXPECT_EQ(list[1].particle_count, 5u);
+  EXPECT_EQ(list[2].stage, "lowering & <done>");
+  EXPECT_EQ(list[2].trapdoor_displacement, 0.005);
+  EXPECT_EQ(list[2].step, 2250);
+
+  const std::vector<Snapshot> all = read_snapshots(path);
+  ASSERT_EQ(all.size(), 3u);
+  expect_same(all[0], empty);
+  expect_same(all[1], first);
+  expect_same(all[2], second);
+
+  // Units are stated in the file for h5py users.
+  const Hdf5File f = Hdf5File::open_read(path);
+  EXPECT_EQ(f.string_attribute("format"), "trapdem-snapshots");
+
+  const std::string xmf = read_all(dir / "snapshots.xmf");
+  EXPECT_NE(xmf.find("<Xdmf Version=\"3.0\">"), std::string::npos);
+  EXPECT_NE(xmf.find("CollectionType=\"Temporal\""), std::string::npos);
+  EXPECT_EQ(count(xmf, "GridType=\"Uniform\""), 2u) << "the empty snapshot is left out";
+  EXPECT_NE(xmf.find("NumberOfElements=\"7\""), std::string::npos);
+  EXPECT_NE(xmf.find("Dimensions=\"7 3\""), std::string::npos);
+  EXPECT_NE(xmf.find(">snapshots.h5:/snapshots/000002/position</DataItem>"), std::string::npos) << xmf;
+  EXPECT_NE(xmf.find("snapshots.h5:/snapshots/000001/radius"), std::string::npos);
+  EXPECT_NE(xmf.find("<Time Value=\"2.25\"/>"), std::string::npos);
+  EXPECT_NE(xmf.find("lowering &amp; &lt;done&gt;"), std::string::npos);
+  EXPECT_EQ(dir.entry_count(), 2u);  // snapshots.h5, snapshots.xmf: no temporaries
+}
+
+TEST(Snapshots, FailedAppendKeepsThePreviousFile) {
+  ScratchDir dir;
+  const auto path = dir / "snapshots.h5";
+  append_snapshot(path, make_snapshot(some_particles(3, 0.0), 1.0, "settling", 0.0, 10));
+  const auto size_before = std::filesystem::file_size(path);
+  {
+    FileSizeLimit limit(size_before + 4096);  // room for the copy, not for 20 000 more particles
+    EXPECT_THROW(append_snapshot(path, make_snapshot(some_particles(20000, 0.0), 2.0, "lowering", 0.01, 20)),
+                 FileError);
+  }
+  const std::vector<SnapshotInfo> list = list_snapshots(path);
+  ASSERT_EQ(list.size(), 1u);
+  EXPECT_EQ(list[0].particle_count, 3u);
+  EXPECT_EQ(dir.entry_count(), 2u);
+}
+
+TEST(Snapshots, ReadsAMinimalFileWrittenByAnotherTool) {
+  // What docs/output.md promises: id, position and radius suffice.
+  ScratchDir dir;
+  const auto path = dir / "mine.h5";
+  {
+    Hdf5File f = Hdf5File::create(path);
+    const Hdf5Group g = f.create_group("snapshots").create_group("000000");
+    g.write_int64s("id", std::vector<std::int64_t>{1, 2});
+    g.write_vec3s("position", std::vector<Vec3>{{0, 0, 0}, {1, 1, 1}});
+    g.write_doubles("radius", std::vector<double>{0.5, 0.5});
+    g.set_double_attribute("trapdoor_displacement", 0.02);
+    f.close();
+  }
+  const Snapshot s = read_snapshot(path, "000000");
+  EXPECT_EQ(s.size(), 2u);
+  EXPECT_EQ(s.trapdoor_displacement, 0.02);
+  EXPECT_EQ(s.velocity.size(), 2u);
+  EXPECT_EQ(s.stage, "");
+}
