@@ -128,7 +128,7 @@ Checkpoint capture_checkpoint(const Simulation& simulation, std::map<std::string
 
 void write_checkpoint(const std::filesystem::path& path, const Checkpoint& c) {
   write_atomically(path, [&](const std::filesystem::path& temporary) {
-    Hdf5File file = Hdf5File::create(temporary);
+    Hdf5File file = Hdf5File::create_in_memory(path);
     file.set_string_attribute("format", kFormat);
     file.set_int_attribute("version", kVersion);
     file.set_double_attribute("time", c.time);
@@ -160,7 +160,7 @@ void write_checkpoint(const std::filesystem::path& path, const Checkpoint& c) {
 
     const Hdf5Group metadata = file.create_group("metadata");
     for (const auto& [key, value] : c.metadata) metadata.set_string_attribute(key, value);
-    file.close();
+    file.write_image(temporary);
   });
 }
 

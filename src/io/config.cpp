@@ -335,6 +335,7 @@ const char* element_name() {
 // ---------------------------------------------------------------------------------------------
 double Config::get_double(std::string_view key, double default_value, std::string_view unit, Range range) {
   const std::string k = full_key(key);
+  state_->used.insert(k);  // even if the value is then refused: it is a known key
   const toml::node* node = find(*state_, k);
   const double x = node ? number_of(*state_, k, *node, unit, range) : default_value;
   record(*state_, k, toml::value<double>(x), unit);
@@ -343,6 +344,7 @@ double Config::get_double(std::string_view key, double default_value, std::strin
 
 std::int64_t Config::get_int(std::string_view key, std::int64_t default_value, Range range) {
   const std::string k = full_key(key);
+  state_->used.insert(k);  // even if the value is then refused: it is a known key
   const toml::node* node = find(*state_, k);
   const std::int64_t x = node ? integer_of(*state_, k, *node, range) : default_value;
   record(*state_, k, toml::value<std::int64_t>(x), {});
@@ -351,6 +353,7 @@ std::int64_t Config::get_int(std::string_view key, std::int64_t default_value, R
 
 bool Config::get_bool(std::string_view key, bool default_value) {
   const std::string k = full_key(key);
+  state_->used.insert(k);  // even if the value is then refused: it is a known key
   const toml::node* node = find(*state_, k);
   bool x = default_value;
   if (node) {
@@ -364,6 +367,7 @@ bool Config::get_bool(std::string_view key, bool default_value) {
 
 std::string Config::get_string(std::string_view key, std::string_view default_value) {
   const std::string k = full_key(key);
+  state_->used.insert(k);  // even if the value is then refused: it is a known key
   const toml::node* node = find(*state_, k);
   std::string x(default_value);
   if (node) x = element_of<std::string>(*state_, k, *node, {}, {});
@@ -377,6 +381,7 @@ std::string Config::get_choice(std::string_view key, std::string_view default_va
   std::string listed;
   for (const std::string& c : choices) listed += (listed.empty() ? "" : ", ") + quote(c);
   const std::string expected = "one of " + listed;
+  state_->used.insert(k);  // even if the value is then refused: it is a known key
   const toml::node* node = find(*state_, k);
   std::string x(default_value);
   if (node) {
@@ -392,6 +397,7 @@ template <class T>
 std::vector<T> Config::get_vector(std::string_view key, const std::vector<T>& default_value, std::string_view unit,
                                   Range range) {
   const std::string k = full_key(key);
+  state_->used.insert(k);  // even if the value is then refused: it is a known key
   const toml::node* node = find(*state_, k);
   std::vector<T> out = default_value;
   if (node) {
@@ -445,9 +451,9 @@ template std::vector<std::string> Config::require_vector(std::string_view, std::
 
 Config Config::get_table(std::string_view key) {
   const std::string k = full_key(key);
+  state_->used.insert(k);  // even if the value is then refused: it is a known key
   const toml::node* node = find(*state_, k);
   if (node && !node->is_table()) wrong(*state_, k, *node, "a table");
-  state_->used.insert(k);
   return Config(state_, k + ".");
 }
 

@@ -1,6 +1,10 @@
 #include "io/hdf5_file.hpp"
 
+#include <fcntl.h>
+#include <unistd.h>
+
 #include <algorithm>
+#include <cerrno>
 #include <cstring>
 
 #include <fmt/format.h>
@@ -376,12 +380,57 @@ Hdf5File Hdf5File::open_read(const fs::path& path) {
   return Hdf5File(path.string(), "/", std::move(file));
 }
 
-Hdf5File Hdf5File::open_read_write(const fs::path& path) {
-  silence_hdf5_errors();
+namespace {
+// The core (memory) driver without a backing store: nothing reaches the disk through HDF5.
+Hdf5Handle memory_access_list() {
   Hdf5Handle fapl = file_access_list();
+  H5Pset_fapl_core(fapl.get(), 4 << 20, 0);  // grow in 4 MiB steps
+  return fapl;
+}
+}  // namespace
+
+Hdf5File Hdf5File::create_in_memory(const fs::path& name) {
+  silence_hdf5_errors();
+  Hdf5Handle fapl = memory_access_list();
+  Hdf5Handle file(H5Fcreate(name.c_str(), H5F_ACC_TRUNC, H5P_DEFAULT, fapl.get()));
+  if (!file.valid()) fail(name.string(), "cannot create the HDF5 file in memory");
+  return Hdf5File(name.string(), "/", std::move(file));
+}
+
+Hdf5File Hdf5File::open_in_memory(const fs::path& path) {
+  silence_hdf5_errors();
+  std::error_code ec;
+  if (!fs::exists(path, ec)) throw FileError(fmt::format("{}: no such file", path.string()));
+  Hdf5Handle fapl = memory_access_list();
   Hdf5Handle file(H5Fopen(path.c_str(), H5F_ACC_RDWR, fapl.get()));
-  if (!file.valid()) fail(path.string(), "cannot open the HDF5 file for writing");
+  if (!file.valid()) fail(path.string(), "cannot load the HDF5 file (damaged or not HDF5?)");
   return Hdf5File(path.string(), "/", std::move(file));
+}
+
+void Hdf5File::write_image(const fs::path& path) {
+  if (!handle_.valid()) throw FileError(fmt::format("{}: the file is already closed", file_));
+  if (H5Fflush(id(), H5F_SCOPE_GLOBAL) < 0) fail(file_, "cannot finish the file in memory");
+  const ssize_t size = H5Fget_file_image(id(), nullptr, 0);
+  if (size < 0) fail(file_, "cannot take the file's image (was it opened in memory?)");
+  std::vector<char> image(static_cast<std::size_t>(size));
+  if (H5Fget_file_image(id(), image.data(), image.size()) != size) fail(file_, "cannot take the file's image");
+  close();
+
+  const int fd = ::open(path.c_str(), O_WRONLY | O_CREAT | O_TRUNC | O_CLOEXEC, 0644);
+  if (fd < 0) throw FileError(fmt::format("cannot create {}: {}", path.string(), std::strerror(errno)));
+  std::size_t done = 0;
+  while (done < image.size()) {
+    const ssize_t n = ::write(fd, image.data() + done, image.size() - done);
+    if (n < 0 && errno == EINTR) continue;
+    if (n <= 0) {
+      const int err = n < 0 ? errno : ENOSPC;
+      ::close(fd);
+      throw FileError(fmt::format("writing {} failed after {} of {} bytes: {}", path.string(), done, image.size(),
+                                  std::strerror(err)));
+    }
+    done += static_cast<std::size_t>(n);
+  }
+  if (::close(fd) != 0) throw FileError(fmt::format("writing {} failed: {}", path.string(), std::strerror(errno)));
 }
 
 void Hdf5File::close() {

@@ -98,14 +98,25 @@ class Hdf5Group {
   std::string child_path(std::string_view name) const;
 };
 
+// Two ways to write. Writers of trapdem's own files build the file in memory and then write its
+// bytes with plain POSIX calls (create_in_memory / open_in_memory + write_image): a full disk is
+// then an ordinary write error, whereas HDF5 1.10 left with a failed flush on a real file crashes
+// at program exit. create() writes straight to disk (tests, small tools).
 class Hdf5File : public Hdf5Group {
  public:
   static Hdf5File create(const std::filesystem::path& path);           // truncates
   static Hdf5File open_read(const std::filesystem::path& path);
-  static Hdf5File open_read_write(const std::filesystem::path& path);
+  // An empty file held in memory; `name` is what messages call it (normally the final path).
+  static Hdf5File create_in_memory(const std::filesystem::path& name);
+  // The file at `path` loaded into memory; changes stay in memory until write_image.
+  static Hdf5File open_in_memory(const std::filesystem::path& path);
 
-  // Flushes and closes, throwing FileError if the data cannot be written (full disk). Writers
-  // must call it: the destructor closes too but cannot report a failure.
+  // In-memory files: writes the complete file to `path` (created or truncated) and closes.
+  // Throws FileError naming `path` and the system's reason (e.g. "No space left on device").
+  void write_image(const std::filesystem::path& path);
+
+  // Flushes and closes, throwing FileError if the data cannot be written. The destructor closes
+  // too but cannot report a failure.
   void close();
 
  private:

@@ -85,10 +85,10 @@ std::string append_snapshot(const fs::path& h5_path, const Snapshot& s) {
       (!s.image.empty() && s.image.size() != n))
     throw FileError(fmt::format("{}: snapshot arrays differ in length ({} ids)", h5_path.string(), n));
   std::string name;
-  modify_atomically(h5_path, [&](const fs::path& temporary) {
+  write_atomically(h5_path, [&](const fs::path& temporary) {
     std::error_code ec;
-    const bool fresh = !fs::exists(temporary, ec);
-    Hdf5File file = fresh ? Hdf5File::create(temporary) : Hdf5File::open_read_write(temporary);
+    const bool fresh = !fs::exists(h5_path, ec);
+    Hdf5File file = fresh ? Hdf5File::create_in_memory(h5_path) : Hdf5File::open_in_memory(h5_path);
     if (fresh) {
       file.set_string_attribute("format", kFormat);
       file.set_int_attribute("version", kVersion);
@@ -107,7 +107,7 @@ std::string append_snapshot(const fs::path& h5_path, const Snapshot& s) {
     g.write_doubles("radius", s.radius, "m");
     if (s.image.empty()) g.write_int3s("image", std::vector<Int3>(n));
     else g.write_int3s("image", s.image);
-    file.close();
+    file.write_image(temporary);
   });
   write_snapshot_xdmf(h5_path);
   return name;

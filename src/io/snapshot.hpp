@@ -3,9 +3,11 @@
 // (/snapshots/000000, /snapshots/000001, ...) and snapshots.xmf, its XDMF 3 companion, lets
 // ParaView open the file as a time series of particles. Layout: docs/output.md.
 //
-// Never a broken file: each append copies snapshots.h5 to a temporary sibling, adds the new group
-// there, syncs it and renames it over the old file (io/atomic_file.hpp); the XDMF file is then
-// rewritten the same way. A crash at any point leaves the previous complete snapshots.h5.
+// Never a broken file: each append loads snapshots.h5 into memory, adds the new group there,
+// writes the whole file to a temporary sibling, syncs it and renames it over the old file
+// (io/atomic_file.hpp); the XDMF file is then rewritten the same way. A crash or a full disk at
+// any point leaves the previous complete snapshots.h5. The price: an append costs a copy of the
+// file (in memory, about twice its size, and on disk), fine for the tens of snapshots of a run.
 #include <cstdint>
 #include <filesystem>
 #include <string>
