@@ -43,7 +43,7 @@ struct ContactForce {
 
 // normal: unit vector from body j towards body i; overlap > 0 (m);
 // relative_velocity: v_i - v_j of the centres (m/s); w_i, w_j angular velocities (rad/s).
-inline ContactForce contact_force(const ContactConstants& c, const ContactBodies& b, const Vec3& normal,
+[[gnu::always_inline]] inline ContactForce contact_force(const ContactConstants& c, const ContactBodies& b, const Vec3& normal,
                                   double overlap, const Vec3& relative_velocity, const Vec3& w_i,
                                   const Vec3& w_j, ContactHistory& h, double dt) {
   const Vec3& n = normal;
@@ -68,7 +68,7 @@ inline ContactForce contact_force(const ContactConstants& c, const ContactBodies
     s = p2 > 0.0 ? in_plane * std::sqrt(s2 / p2) : Vec3{};
   }
   s += vt * dt;
-  const double c_t = c.two_beta * std::sqrt(b.effective_mass * c.kt);
+  const double c_t = c_n * c.sqrt_kt_over_kn;  // 2 beta sqrt(m* k_t)
   Vec3 ft = -c.kt * s - c_t * vt;
 
   // Static/kinetic Coulomb friction. Sticking holds while |F_t| <= mu_s |F_n|; beyond it the
@@ -117,8 +117,8 @@ inline ContactForce contact_force(const ContactConstants& c, const ContactBodies
         mk *= m_max / std::sqrt(mk2);  // fully mobilised: no dashpot (Ai et al. eq. 18)
         rolling_torque = mk;
       } else {
-        const double c_r = c.eta_r * 2.0 * std::sqrt(b.rolling_inertia * kr);
-        rolling_torque = mk - c_r * wr;
+        rolling_torque = mk;
+        if (c.eta_r > 0.0) rolling_torque -= (c.eta_r * 2.0 * std::sqrt(b.rolling_inertia * kr)) * wr;
       }
       h.rolling_spring = mk;
     }

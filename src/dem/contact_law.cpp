@@ -72,6 +72,9 @@ ContactConstants make_constants(const ContactLaw& law) {
   c.effective_lever_arm = law.lever_arm == RollingLeverArm::effective_radius;
   c.rolling_stiffness_from_kt = law.rolling_stiffness == RollingStiffness::tangential;
   c.eta_r = law.rolling_damping;
+  c.sqrt_kt_over_kn = std::sqrt(c.kt / c.kn);
+  c.needs_rolling_inertia = c.rolling == 2 && c.eta_r > 0.0;
+  c.needs_spin_inertia = c.rolling == 1;
   return c;
 }
 

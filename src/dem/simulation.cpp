@@ -126,10 +126,27 @@ void Simulation::step() {
   check_stability();
 }
 
+// The partner shares start at zero; `pair_active_` mirrors the history's touching flag in one byte,
+// so that the many pairs in the list that do not touch cost no read of their history.
+void Simulation::reset_pair_buffers() {
+  pair_force_on_partner_.assign(pairs_.size(), Vec3{});
+  pair_torque_on_partner_.assign(pairs_.size(), Vec3{});
+  pair_active_.resize(pairs_.size());
+  for (std::size_t k = 0; k < pairs_.size(); ++k) pair_active_[k] = pairs_.history[k].flags != 0 ? 1 : 0;
+}
+
 void Simulation::integrate_positions() {
   const double dt = dt_, half = 0.5 * dt_;
   const Vec3 g = gravity();
+  // Bounds of the escape check: none on periodic axes.
   const Domain& dom = settings_.domain;
+  Vec3 lo = dom.lower, hi = dom.upper;
+  for (int a = 0; a < 3; ++a) {
+    if (dom.periodic[a]) {
+      lo[a] = -std::numeric_limits<double>::infinity();
+      hi[a] = std::numeric_limits<double>::infinity();
+    }
+  }
   const bool rotate = !settings_.freeze_rotation;
   const std::size_t n = p_.size();
   Vec3* x = p_.position.data();
@@ -151,10 +168,9 @@ void Simulation::integrate_positions() {
     x[i] += dt * v[i];
     if (rotate) w[i] += (half * inv_i[i]) * t[i];
     if (track) max_d2 = std::max(max_d2, norm2(x[i] - x0[i]));
-    for (int a = 0; a < 3; ++a) {
-      if (!dom.periodic[a] && !(x[i][a] >= dom.lower[a] && x[i][a] <= dom.upper[a]))
-        escaped = std::min<std::int64_t>(escaped, std::int64_t(i));
-    }
+    const bool inside = x[i].x >= lo.x && x[i].x <= hi.x && x[i].y >= lo.y && x[i].y <= hi.y && x[i].z >= lo.z &&
+                        x[i].z <= hi.z;  // false for NaN too
+    if (!inside) escaped = std::min<std::int64_t>(escaped, std::int64_t(i));
   }
   max_displacement2_ = max_d2;
   escaped_particle_ = escaped == kNone ? -1 : escaped;
@@ -223,8 +239,7 @@ void Simulation::rebuild_lists() {
   build_wall_candidates(p_, walls_, skin_, wall_list_);
   archive.restore_walls(wall_list_, p_.id);
 
-  pair_force_on_partner_.assign(pairs_.size(), Vec3{});
-  pair_torque_on_partner_.assign(pairs_.size(), Vec3{});
+  reset_pair_buffers();
   position_at_build_ = p_.position;
   wall_displacement_at_build_.resize(walls_.size());
   for (std::size_t k = 0; k < walls_.size(); ++k) wall_displacement_at_build_[k] = walls_[k].displacement;
@@ -238,7 +253,6 @@ void Simulation::particle_contacts() {
   const ContactConstants c = constants_;
   const Domain dom = settings_.domain;
   const bool periodic = dom.any_periodic();
-  const bool rolling = c.rolling != 0;
   const double dt = dt_;
   const Vec3* x = p_.position.data();
   const Vec3* v = p_.velocity.data();
@@ -251,6 +265,7 @@ void Simulation::particle_contacts() {
   const std::uint32_t* first = pairs_.first.data();
   const std::uint32_t* partner = pairs_.partner.data();
   ContactHistory* history = pairs_.history.data();
+  std::uint8_t* active = pair_active_.data();
   Vec3* f_partner = pair_force_on_partner_.data();
   Vec3* t_partner = pair_torque_on_partner_.data();
   double max_overlap = 0.0;
@@ -267,13 +282,19 @@ void Simulation::particle_contacts() {
       const double rj = r[j];
       const double reach = ri + rj;
       if (dist2 >= reach * reach) {
-        if (history[k].flags != 0) history[k].reset();
-        f_partner[k] = Vec3{};
-        t_partner[k] = Vec3{};
+        // The partner's share was zeroed at the list build and stays zero until a contact
+        // starts: only an ending contact needs clearing.
+        if (active[k]) {
+          active[k] = 0;
+          history[k].reset();
+          f_partner[k] = Vec3{};
+          t_partner[k] = Vec3{};
+        }
         continue;
       }
+      active[k] = 1;
       const double dist = std::sqrt(dist2);
-      const Vec3 normal = d / dist;
+      const Vec3 normal = d * (1.0 / dist);
       const double overlap = reach - dist;
       max_overlap = std::max(max_overlap, overlap / std::min(ri, rj));
       ContactBodies b;
@@ -281,13 +302,12 @@ void Simulation::particle_contacts() {
       b.arm_i = ri - 0.5 * overlap;
       b.arm_j = rj - 0.5 * overlap;
       b.lever = c.effective_lever_arm ? ri * rj / reach : 0.5 * reach;
-      if (rolling) {
+      b.rolling_inertia = b.spin_inertia = 0.0;
+      if (c.needs_rolling_inertia) {
         const double ii = 1.0 / inv_i[i], ij = 1.0 / inv_i[j];
         b.rolling_inertia = 1.0 / (1.0 / (ii + m[i] * ri * ri) + 1.0 / (ij + m[j] * rj * rj));
-        b.spin_inertia = 1.0 / (inv_i[i] + inv_i[j]);
-      } else {
-        b.rolling_inertia = b.spin_inertia = 0.0;
       }
+      if (c.needs_spin_inertia) b.spin_inertia = 1.0 / (inv_i[i] + inv_i[j]);
       const ContactForce cf = contact_force(c, b, normal, overlap, v[i] - v[j], w[i], w[j], history[k], dt);
       const Vec3 n_x_ft = cross(normal, cf.tangential);
       fi += cf.force;
@@ -340,8 +360,13 @@ void Simulation::wall_contacts() {
         ti += t_partner[inc_pair[q]];
       }
       const std::uint32_t k0 = wfirst[i], count = wfirst[i + 1] - k0;
-      std::array<WallProximity, kMaxWallCandidates> near;
-      std::array<bool, kMaxWallCandidates> touching;
+      if (count == 0) {  // most particles are away from every wall
+        f[i] = fi;
+        t[i] = ti;
+        continue;
+      }
+      WallProximity near[kMaxWallCandidates];
+      bool touching[kMaxWallCandidates];
       std::uint32_t touching_count = 0;
       for (std::uint32_t c = 0; c < count; ++c) {
         near[c] = wall_proximity(walls[wall_of[k0 + c]], x[i]);
@@ -354,7 +379,7 @@ void Simulation::wall_contacts() {
         const Wall& wall = walls[wall_of[k]];
         const double overlap = r[i] - near[c].distance;
         if (!touching[c] ||
-            (several && edge_contact_hidden(c, near.data(), touching.data(), count,
+            (several && edge_contact_hidden(c, near, touching, count,
                                             [&](std::size_t b) -> const Wall& { return walls[wall_of[k0 + b]]; },
                                             1e-6 * r[i]))) {
           if (whist[k].flags != 0) whist[k].reset();
@@ -497,8 +522,7 @@ void Simulation::restore(double time, const SimulationStats& stats, ListState li
   position_at_build_ = std::move(lists.position_at_build);
   wall_displacement_at_build_ = std::move(lists.wall_displacement_at_build);
   rebuilds_since_reorder_ = lists.rebuilds_since_reorder;
-  pair_force_on_partner_.assign(pairs_.size(), Vec3{});
-  pair_torque_on_partner_.assign(pairs_.size(), Vec3{});
+  reset_pair_buffers();
   history_pending_ = false;
   lists_valid_ = true;
   setup_done_ = true;

@@ -98,6 +98,7 @@ class Simulation {
   void integrate_velocities();
   void check_stability() const;
   void invalidate_lists() { lists_valid_ = false; }
+  void reset_pair_buffers();
   std::string describe_particle(std::uint32_t i) const;
 
   Particles p_;
@@ -116,6 +117,7 @@ class Simulation {
   bool history_pending_ = false;
   std::vector<Vec3> pair_force_on_partner_;   // N, per pair: force on the partner (second body)
   std::vector<Vec3> pair_torque_on_partner_;  // N m
+  std::vector<std::uint8_t> pair_active_;     // 1 while the pair touches
   std::vector<Vec3> position_at_build_;
   std::vector<Vec3> wall_displacement_at_build_;
   bool lists_valid_ = false;
