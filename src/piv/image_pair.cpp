@@ -1,5 +1,6 @@
 #include "piv/image_pair.hpp"
 
+#include <limits>
 #include <queue>
 #ifdef _OPENMP
 #include <omp.h>
@@ -40,6 +41,14 @@ bool is_seed_candidate(const SubsetGrid& grid, std::size_t i, int spacing) {
 
 }  // namespace
 
+namespace {
+IcgnResult refine(const ReferenceSubsets& refs, std::size_t i, const PreparedImage& reference,
+                  const PreparedImage& current, const WarpParameters& start, const IcgnSettings& settings) {
+  const auto subset = make_reference_subset(reference.spline, refs.centre[i], refs.subset_size);
+  return refine_subset(*subset, current.spline, start, settings);  // present: the subset exists
+}
+}  // namespace
+
 bool is_accepted(const PairSolution& s, bool textured, double min_valid_zncc) {
   return textured && s.attempted && s.best.outcome == IcgnOutcome::converged && s.best.zncc >= min_valid_zncc;
 }
@@ -47,16 +56,24 @@ bool is_accepted(const PairSolution& s, bool textured, double min_valid_zncc) {
 ReferenceSubsets make_reference_subsets(const PreparedImage& reference, const std::vector<cv::Point2d>& centres,
                                         const std::vector<bool>& alive, int subset_size,
                                         const TextureCriteria& criteria) {
-  const std::ptrdiff_t n = static_cast<std::ptrdiff_t>(centres.size());
+  const std::size_t n = centres.size();
   ReferenceSubsets out;
-  out.subset.resize(centres.size());
-  std::vector<char> textured(centres.size(), 0);
-#pragma omp parallel for schedule(static)
-  for (std::ptrdiff_t i = 0; i < n; ++i) {
+  out.subset_size = subset_size;
+  out.centre = centres;
+  out.intensity_std.assign(n, std::numeric_limits<double>::quiet_NaN());
+  out.sum_squared_gradient.assign(n, std::numeric_limits<double>::quiet_NaN());
+  std::vector<char> present(n, 0), textured(n, 0);
+#pragma omp parallel for schedule(dynamic, 64)
+  for (std::ptrdiff_t i = 0; i < static_cast<std::ptrdiff_t>(n); ++i) {
     if (!alive[i]) continue;
-    out.subset[i] = make_reference_subset(reference.spline, centres[i], subset_size);
-    textured[i] = out.subset[i] && has_enough_texture(*out.subset[i], criteria);
+    const auto s = make_reference_subset(reference.spline, centres[i], subset_size);
+    if (!s) continue;
+    present[i] = 1;
+    textured[i] = has_enough_texture(*s, criteria);
+    out.intensity_std[i] = s->intensity_std;
+    out.sum_squared_gradient[i] = sum_squared_gradient(*s);
   }
+  out.present.assign(present.begin(), present.end());
   out.textured.assign(textured.begin(), textured.end());
   return out;
 }
@@ -76,8 +93,8 @@ std::vector<PairSolution> solve_image_pair(const SubsetGrid& grid, const Referen
   //    threshold are kept; the others are found again by seeds and propagation.
 #pragma omp parallel for schedule(dynamic, 16) num_threads(threads)
   for (std::ptrdiff_t i = 0; i < count; ++i) {
-    if (!refs.subset[i] || !start[i]) continue;
-    const IcgnResult r = refine_subset(*refs.subset[i], current.spline, *start[i], settings.icgn);
+    if (!refs.present[i] || !start[i]) continue;
+    const IcgnResult r = refine(refs, i, reference, current, *start[i], settings.icgn);
     const bool trusted = r.outcome == IcgnOutcome::converged && r.zncc >= settings.reference_update_zncc;
     if (trusted || r.outcome == IcgnOutcome::left_image) keep_better(solution[i], r);
   }
@@ -85,15 +102,15 @@ std::vector<PairSolution> solve_image_pair(const SubsetGrid& grid, const Referen
   // 2. Seeds: integer-pixel ZNCC search, then IC-GN, for candidates not yet accepted.
 #pragma omp parallel for schedule(dynamic, 1) num_threads(threads)
   for (std::ptrdiff_t i = 0; i < count; ++i) {
-    if (!refs.subset[i] || !refs.textured[i] || accepted(i) || !is_seed_candidate(grid, i, settings.seed_spacing))
+    if (!refs.textured[i] || accepted(i) || !is_seed_candidate(grid, i, settings.seed_spacing))
       continue;
-    const IntegerMatch match = integer_pixel_search(reference.intensity32, current.intensity32, refs.subset[i]->centre,
+    const IntegerMatch match = integer_pixel_search(reference.intensity32, current.intensity32, refs.centre[i],
                                                     grid.subset_size, prediction[i], settings.search_radius);
     if (!match.found || match.zncc < settings.min_valid_zncc) continue;  // no credible match in the window
     WarpParameters p;
     p.u = match.du;
     p.v = match.dv;
-    keep_better(solution[i], refine_subset(*refs.subset[i], current.spline, p, settings.icgn));
+    keep_better(solution[i], refine(refs, i, reference, current, p, settings.icgn));
   }
 
   // 3. Reliability-guided propagation from every accepted subset, highest ZNCC first.
@@ -107,12 +124,11 @@ std::vector<PairSolution> solve_image_pair(const SubsetGrid& grid, const Referen
     queue.pop();
     if (propagated[i]) continue;
     propagated[i] = true;
-    const ReferenceSubset& from = *refs.subset[i];
     for (std::size_t j : grid_neighbours(grid, i)) {
-      if (!refs.subset[j] || accepted(j)) continue;
-      const cv::Point2d offset = refs.subset[j]->centre - from.centre;
+      if (!refs.present[j] || accepted(j)) continue;
+      const cv::Point2d offset = refs.centre[j] - refs.centre[i];
       const WarpParameters guess = shifted_warp(solution[i].best.p, offset.x, offset.y);
-      keep_better(solution[j], refine_subset(*refs.subset[j], current.spline, guess, settings.icgn));
+      keep_better(solution[j], refine(refs, j, reference, current, guess, settings.icgn));
       if (accepted(j)) queue.emplace(solution[j].best.zncc, -static_cast<std::ptrdiff_t>(j));
     }
   }

@@ -22,10 +22,17 @@
 
 namespace trapdem {
 
-// The subsets of one reference image, indexed like the grid; empty where the subset is lost.
+// The subsets of one reference image, indexed like the grid: where they are and their texture.
+// The IC-GN data of a subset (ReferenceSubset, 56 kB for L = 32) is rebuilt from the reference
+// spline each time it is matched, so that tens of thousands of subsets of a 12-megapixel photograph
+// need no gigabytes; rebuilding costs about one IC-GN iteration.
 struct ReferenceSubsets {
-  std::vector<std::optional<ReferenceSubset>> subset;
-  std::vector<bool> textured;  // passes the texture criteria
+  int subset_size = 0;                // px
+  std::vector<cv::Point2d> centre;    // px, in the reference image
+  std::vector<bool> present;          // inside the image, not lost, Hessian invertible
+  std::vector<bool> textured;         // present and passes the texture criteria
+  std::vector<double> intensity_std;  // grey levels; NaN if not present
+  std::vector<double> sum_squared_gradient;  // SSSIG, (grey levels / px)^2; NaN if not present
 };
 
 ReferenceSubsets make_reference_subsets(const PreparedImage& reference, const std::vector<cv::Point2d>& centres,

@@ -16,7 +16,7 @@ struct PivSettings {
   int search_radius = 16;                 // px, integer-pixel ZNCC search around the predicted displacement
   int seed_spacing = 4;                   // every seed_spacing-th subset along each axis is a seed candidate
   IcgnSettings icgn;                      // convergence tolerance 1e-3 px, at most 50 iterations
-  TextureCriteria texture;                // std >= 15 grey levels, SSSIG >= 1e5 (8-bit scale)
+  TextureCriteria texture;                // std >= 5 grey levels, SSSIG >= 5e3 (8-bit scale)
   double min_valid_zncc = 0.6;            // a converged subset below this is flagged low_correlation
   double reference_update_zncc = 0.75;    // leapfrog: update the reference when a textured subset drops below
   int threads = 0;                        // OpenMP threads; 0: OpenMP's default

@@ -38,7 +38,7 @@ Reference make_reference(std::size_t index, std::shared_ptr<const PreparedImage>
 }
 
 SubsetStatus status_of(const PairSolution& s, bool textured, const PivSettings& settings) {
-  if (!s.attempted) return SubsetStatus::not_converged;
+  if (!s.attempted) return textured ? SubsetStatus::not_converged : SubsetStatus::low_texture;
   switch (s.best.outcome) {
     case IcgnOutcome::converged:
       if (!textured) return SubsetStatus::low_texture;
@@ -54,10 +54,9 @@ std::vector<SubsetMeasurement> measurements_of(const std::vector<PairSolution>& 
   std::vector<SubsetMeasurement> out(solution.size());
   for (std::size_t i = 0; i < solution.size(); ++i) {
     SubsetMeasurement& m = out[i];
-    const auto& sub = ref.subsets.subset[i];
-    if (!sub) continue;  // lost
-    m.intensity_std = sub->intensity_std;
-    m.sum_squared_gradient = sum_squared_gradient(*sub);
+    if (!ref.subsets.present[i]) continue;  // lost
+    m.intensity_std = ref.subsets.intensity_std[i];
+    m.sum_squared_gradient = ref.subsets.sum_squared_gradient[i];
     m.status = status_of(solution[i], ref.subsets.textured[i], settings);
     if (!solution[i].attempted) continue;
     const IcgnResult& r = solution[i].best;
@@ -122,9 +121,9 @@ PivResult run_piv(std::size_t count, const std::function<GreyImage(std::size_t)>
       SubsetMeasurement& s = m0.subset[i];
       s.u = s.v = 0.0;
       s.zncc = 1.0;
-      if (!ref.subsets.subset[i]) continue;
-      s.intensity_std = ref.subsets.subset[i]->intensity_std;
-      s.sum_squared_gradient = sum_squared_gradient(*ref.subsets.subset[i]);
+      if (!ref.subsets.present[i]) continue;
+      s.intensity_std = ref.subsets.intensity_std[i];
+      s.sum_squared_gradient = ref.subsets.sum_squared_gradient[i];
       s.status = ref.subsets.textured[i] ? SubsetStatus::valid : SubsetStatus::low_texture;
     }
     m0.seconds = std::chrono::duration<double>(Clock::now() - start_time).count();
