@@ -487,6 +487,9 @@ InputError Config::error(std::string_view key, std::string_view expected) const 
 // ---------------------------------------------------------------------------------------------
 namespace {
 
+// Derived values live under this table in resolved.toml; reading such a file back must not fail.
+constexpr const char* kDerivedTable = "derived";
+
 struct Unknown {
   std::string key;
   const toml::node* node;
@@ -496,6 +499,7 @@ void collect_unused(const Config::State& s, const toml::table& table, const std:
                     std::vector<Unknown>& out) {
   for (const auto& [name, node] : table) {
     const std::string key = prefix + std::string(name.str());
+    if (key == kDerivedTable) continue;  // output of an earlier run (resolved.toml read again)
     if (const toml::table* sub = node.as_table(); sub && !sub->empty()) {
       collect_unused(s, *sub, key + ".", out);
     } else if (!s.used.count(key)) {

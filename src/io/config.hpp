@@ -95,7 +95,8 @@ class Config {
   std::vector<std::string> unused_keys() const;   // full dotted keys, document order
 
   // Adds a value computed from the configuration to the resolved output (e.g. "derived.time_step").
-  // Keys are absolute (the view's prefix is not applied).
+  // Keys are absolute (the view's prefix is not applied). The top-level table "derived" is
+  // output only: report_unused() ignores it, so a resolved.toml can be run again as it is.
   void add_derived(std::string_view key, double value, std::string_view unit = {});
   void add_derived(std::string_view key, std::int64_t value, std::string_view unit = {});
   void add_derived(std::string_view key, std::string_view value);

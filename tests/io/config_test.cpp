@@ -4,6 +4,7 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <fstream>
 #include <string>
 
@@ -200,4 +201,11 @@ TEST(Config, ResolvedOutputRoundTrips) {
   EXPECT_EQ(back.get_int("derived.particle_count", 0), 299873);
   EXPECT_EQ(back.get_string("derived.note", ""), "from box and material");
   EXPECT_NO_THROW(back.report_unused());  // nothing in it but what was read
+
+  // Run again from the resolved file: its [derived] table is not an unknown key.
+  Config again = Config::parse(text, "resolved.toml");
+  again.get_double("box.width", 0.0);
+  const std::vector<std::string> unread = again.unused_keys();
+  EXPECT_EQ(unread.size(), 13u);  // the 14 input keys but box.width; no derived.*
+  EXPECT_EQ(std::count(unread.begin(), unread.end(), "derived.time_step"), 0);
 }
