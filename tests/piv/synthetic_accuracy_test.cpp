@@ -131,3 +131,47 @@ TEST(PivAccuracy, SimpleShearRecovered) {
 
 }  // namespace
 }  // namespace trapdem
+
+namespace trapdem {
+namespace {
+
+// With realistic noise (Gaussian, 2 grey levels = 1 % of the 200-level contrast, 8-bit): the
+// figures quoted in docs/piv.md. Random error grows as sigma_noise / sqrt(SSSIG) (Pan et al. 2008).
+TEST(PivAccuracy, RigidShiftAndStrainWithNoise) {
+  SpeckleSettings speckle;
+  speckle.noise_std = 2.0;
+  const DisplacementField shift = rigid_shift(0.35, -0.65);
+  const DisplacementField strain = uniform_strain(0.01, -0.01, {128.0, 128.0});
+  const auto images = synthesize_speckle_sequence(speckle, {shift, strain});
+  const PivResult a = run_piv(std::vector<cv::Mat>{images[0], images[1]}, PivSettings{});
+  const auto [eu, ev] = test::displacement_errors(a, 1, shift);
+  const auto su = statistics(eu), sv = statistics(ev);
+  report("noise 2 grey levels: shift systematic error u (px)", std::abs(su.mean), 0.005);
+  report("noise 2 grey levels: shift systematic error v (px)", std::abs(sv.mean), 0.005);
+  report("noise 2 grey levels: shift standard deviation u (px)", su.std, 0.02);
+  report("noise 2 grey levels: shift standard deviation v (px)", sv.std, 0.02);
+  EXPECT_LT(std::abs(su.mean), 0.005);
+  EXPECT_LT(std::abs(sv.mean), 0.005);
+  EXPECT_LT(su.std, 0.02);
+  EXPECT_LT(sv.std, 0.02);
+
+  const PivResult b = run_piv(std::vector<cv::Mat>{images[0], images[2]}, PivSettings{});
+  const double ux = [&] {
+    double s = 0.0;
+    int n = 0;
+    for (const auto& m : b.image[1].subset)
+      if (m.is_valid()) s += m.relative.ux, ++n;
+    return s / n;
+  }();
+  const PivStrainField f = piv_total_strain(b, 1, scale_transform(1.0));
+  double sxx = 0.0;
+  for (const auto& e : f.strain) sxx += e.exx;
+  sxx /= static_cast<double>(f.strain.size());
+  report("noise 2 grey levels: 1 % strain, IC-GN du/dx relative error", std::abs(ux - 0.01) / 0.01, 0.02);
+  report("noise 2 grey levels: 1 % strain, CST e_xx relative error", std::abs(sxx + 0.01) / 0.01, 0.02);
+  EXPECT_NEAR(ux, 0.01, 0.0002);
+  EXPECT_NEAR(sxx, -0.01, 0.0002);
+}
+
+}  // namespace
+}  // namespace trapdem
