@@ -1,7 +1,7 @@
 #pragma once
 // Synthetic speckle images under a prescribed displacement field, for tests and for users to
-// check their settings. The pattern is a sum of Gaussian speckles (the usual model of DIC
-// speckle generators, e.g. Orteu et al. 2006, Exp. Mech. 46: 233-245), with a smooth saturation:
+// check their settings. The pattern is a sum of Gaussian speckles (the usual model of synthetic
+// DIC images), with a smooth saturation:
 //   S(X) = sum_k exp(-|X - X_k|^2 / (2 s_k^2)),   I = background + (foreground - background)(1 - exp(-S)).
 // A deformed image is I(X(x)): every speckle is drawn at its displaced centre x_k = X_k + u(X_k)
 // and shaped by the local deformation gradient F = I + grad u (exact for uniform gradients, first

@@ -1,7 +1,7 @@
 #pragma once
 // Texture criteria against the "vermiculate" artefacts of poorly textured subsets (Stanier,
 // Blaber, Take & White 2016, Comput. Geotech. 72: 100-113; the sum of squared subset intensity
-// gradients, SSSIG, of Pan et al. 2008, Opt. Lasers Eng. 46: 460-470): a subset is used only if
+// gradients, SSSIG, of Pan et al. 2008, Opt. Express 16: 7037-7048): a subset is used only if
 // its intensity standard deviation and its SSSIG both reach a threshold. Intensities are on the
 // 8-bit scale for every bit depth (grey_image.hpp), so the thresholds need no rescaling.
 #include "piv/reference_subset.hpp"
