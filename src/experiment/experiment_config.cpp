@@ -1,0 +1,167 @@
+#include "experiment/experiment_config.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <numbers>
+
+#include <fmt/format.h>
+
+#include "io/config.hpp"
+
+namespace trapdem {
+
+namespace {
+
+// A contact law's keys, with defaults taken from `base` (the particle law for the walls).
+ContactLaw read_contact_law(Config table, const ContactLaw& base) {
+  ContactLaw law;
+  law.normal_stiffness = table.get_double("normal_stiffness", base.normal_stiffness, "N/m", Range::positive());
+  const double kt_default = table.has("normal_stiffness") ? 0.5 * law.normal_stiffness : base.tangential_stiffness;
+  law.tangential_stiffness = table.get_double("tangential_stiffness", kt_default, "N/m", Range::non_negative());
+  law.restitution = table.get_double("restitution", base.restitution, "", Range::unit_open_closed());
+  law.static_friction = table.get_double("static_friction", base.static_friction, "", Range::non_negative());
+  const double mu_k_default = table.has("static_friction") ? law.static_friction : base.kinetic_friction;
+  law.kinetic_friction = table.get_double("kinetic_friction", mu_k_default, "", Range::non_negative());
+  law.rolling_friction = table.get_double("rolling_friction", base.rolling_friction, "", Range::non_negative());
+  law.rolling_model = parse_rolling_model(table.get_choice("rolling_model", to_string(base.rolling_model),
+                                                           {"none", "constant_torque", "elastic_plastic"}));
+  law.lever_arm = parse_lever_arm(
+      table.get_choice("lever_arm", to_string(base.lever_arm), {"average_radius", "effective_radius"}));
+  law.rolling_stiffness = parse_rolling_stiffness(
+      table.get_choice("rolling_stiffness", to_string(base.rolling_stiffness), {"ai2011", "tangential"}));
+  law.rolling_damping = table.get_double("rolling_damping", base.rolling_damping, "", Range::non_negative());
+  return law;
+}
+
+SizeDistribution read_sizes(Config& p) {
+  const std::string kind = p.get_choice("size", "single", {"single", "uniform", "grading"});
+  if (kind == "single") return SizeDistribution::single(p.get_double("diameter", 0.002, "m", Range::positive()));
+  if (kind == "uniform") {
+    const double lo = p.require_double("min_diameter", "m", Range::positive());
+    const double hi = p.require_double("max_diameter", "m", Range::positive());
+    if (hi < lo) throw p.error("max_diameter", fmt::format("a size >= min_diameter ({} m)", lo));
+    return SizeDistribution::uniform(lo, hi);
+  }
+  const auto rows = p.require_vector<std::vector<double>>("grading");
+  std::vector<std::pair<double, double>> table;
+  for (const auto& row : rows) {
+    if (row.size() != 2) throw p.error("grading", "rows of two numbers: [diameter in m, percent passing]");
+    table.emplace_back(row[0], row[1]);
+  }
+  return SizeDistribution::grading(std::move(table), p.source_name() + ": particles.grading");
+}
+
+}  // namespace
+
+ExperimentConfig ExperimentConfig::from(Config& c) {
+  ExperimentConfig e;
+  e.name = c.get_string("name", "trapdoor");
+  e.description = c.get_string("description", "");
+
+  Config box = c.get_table("box");
+  e.box.width = box.get_double("width", e.box.width, "m", Range::positive());
+  e.box.depth = box.get_double("depth", e.box.depth, "m", Range::positive());
+  e.box.height = box.get_double("height", e.box.height, "m", Range::positive());
+  e.box.periodic_depth = box.get_choice("depth_boundary", "walls", {"walls", "periodic"}) == "periodic";
+
+  Config door = c.get_table("trapdoor");
+  e.trapdoor.width = door.get_double("width", e.trapdoor.width, "m", Range::positive());
+  if (e.trapdoor.width >= e.box.width)
+    throw door.error("width", fmt::format("a trapdoor narrower than the box (box.width = {} m)", e.box.width));
+  e.trapdoor.centre = door.get_double("centre", 0.5 * e.box.width, "m", Range::positive());
+  if (e.trapdoor.centre - 0.5 * e.trapdoor.width <= 0.0 || e.trapdoor.centre + 0.5 * e.trapdoor.width >= e.box.width)
+    throw door.error("centre", fmt::format("a position that keeps the trapdoor inside the box (0 .. {} m) with "
+                                           "fixed base on both sides", e.box.width));
+  e.trapdoor.travel = door.get_double("travel", e.trapdoor.travel, "m", Range::positive());
+  e.trapdoor.rate = door.get_double("rate", e.trapdoor.rate, "m/s", Range::positive());
+  e.trapdoor.cavity_depth = door.get_double("cavity_depth", e.trapdoor.travel + 0.01, "m", Range::positive());
+  if (e.trapdoor.cavity_depth < e.trapdoor.travel)
+    throw door.error("cavity_depth", fmt::format("at least the travel ({} m)", e.trapdoor.travel));
+
+  Config particles = c.get_table("particles");
+  e.material.density = particles.get_double("density", e.material.density, "kg/m^3", Range::positive());
+  e.material.sizes = read_sizes(particles);
+  if (e.material.sizes.max_diameter() * 3.0 > e.box.depth && !e.box.periodic_depth)
+    throw particles.error("diameter", fmt::format("particles at most a third of the box depth ({} m)", e.box.depth));
+
+  e.material.particle = read_contact_law(c.get_table("contact"), ContactLaw{});
+  Config walls = c.get_table("walls");
+  e.material.base = read_contact_law(walls.get_table("base"), e.material.particle);
+  e.material.front = read_contact_law(walls.get_table("front"), e.material.base);
+  e.material.back = read_contact_law(walls.get_table("back"), e.material.base);
+
+  Config pour = c.get_table("pluviation");
+  e.pluviation.count = pour.get_int("count", 0, Range::non_negative());
+  e.pluviation.fill_height = pour.get_double("fill_height", 0.0, "m", Range::non_negative());
+  if (e.pluviation.count == 0 && e.pluviation.fill_height == 0.0)
+    throw pour.error("count", "a particle count or a fill_height (m) to end the pour");
+  if (e.pluviation.fill_height > e.box.height)
+    throw pour.error("fill_height", fmt::format("at most the box height ({} m)", e.box.height));
+  e.pluviation.drop_height = pour.get_double("drop_height", e.pluviation.drop_height, "m", Range::non_negative());
+  e.pluviation.flow_rate = pour.get_double("flow_rate", 0.0, "kg/s", Range::non_negative());
+  e.pluviation.packing_fraction =
+      pour.get_double("packing_fraction", e.pluviation.packing_fraction, "", Range::open_closed(0.0, 0.75));
+  e.pluviation.seed = static_cast<std::uint64_t>(pour.get_int("seed", 1, Range::non_negative()));
+
+  Config settle = c.get_table("settling");
+  e.settling.energy_ratio = settle.get_double("energy_ratio", e.settling.energy_ratio, "", Range::positive());
+  e.settling.min_time = settle.get_double("min_time", e.settling.min_time, "s", Range::non_negative());
+  e.settling.max_time = settle.get_double("max_time", e.settling.max_time, "s", Range::positive());
+
+  Config spin = c.get_table("spin_up");
+  e.spin_up.g_level = spin.get_double("g_level", e.spin_up.g_level, "g", Range::at_least(1.0));
+  e.spin_up.ramp_time = spin.get_double("ramp_time", e.spin_up.ramp_time, "s", Range::non_negative());
+
+  Config num = c.get_table("numerics");
+  e.numerics.time_step = num.get_double("time_step", 0.0, "s", Range::non_negative());
+  e.numerics.time_step_fraction =
+      num.get_double("time_step_fraction", e.numerics.time_step_fraction, "", Range::open_closed(0.0, 1.0));
+  e.numerics.skin_fraction = num.get_double("skin_fraction", e.numerics.skin_fraction, "", Range::positive());
+  e.numerics.max_overlap_fraction =
+      num.get_double("max_overlap_fraction", e.numerics.max_overlap_fraction, "", Range::open_closed(0.0, 1.0));
+  e.numerics.threads = static_cast<int>(num.get_int("threads", 0, Range::non_negative()));
+  if (e.numerics.time_step > e.critical_time_step())
+    throw num.error("time_step", fmt::format("a step at most the critical step sqrt(m_min/k_max) = {:.4g} s",
+                                             e.critical_time_step()));
+
+  Config out = c.get_table("output");
+  e.output.snapshot_displacements =
+      out.get_vector<double>("snapshot_displacements", e.output.snapshot_displacements, "m", Range::non_negative());
+  std::sort(e.output.snapshot_displacements.begin(), e.output.snapshot_displacements.end());
+  e.output.ground_reaction_step =
+      out.get_double("ground_reaction_step", e.output.ground_reaction_step, "m", Range::positive());
+  e.output.checkpoint_interval =
+      out.get_double("checkpoint_interval", e.output.checkpoint_interval, "s", Range::positive());
+  e.output.log_interval = out.get_double("log_interval", e.output.log_interval, "s", Range::positive());
+
+  c.report_unused();
+  c.add_derived("derived.critical_time_step", e.critical_time_step(), "s");
+  c.add_derived("derived.time_step", e.time_step(), "s");
+  c.add_derived("derived.skin", e.skin(), "m");
+  c.add_derived("derived.expected_particle_count", e.expected_particle_count());
+  c.add_derived("derived.mean_diameter", e.material.sizes.mean_diameter(), "m");
+  return e;
+}
+
+double ExperimentConfig::critical_time_step() const {
+  const double r = 0.5 * material.sizes.min_diameter();
+  const double m_min = material.density * 4.0 / 3.0 * std::numbers::pi * r * r * r;
+  const double k_max = std::max({material.particle.normal_stiffness, material.base.normal_stiffness,
+                                 material.front.normal_stiffness, material.back.normal_stiffness});
+  return std::sqrt(m_min / k_max);
+}
+
+double ExperimentConfig::time_step() const {
+  return numerics.time_step > 0.0 ? numerics.time_step : numerics.time_step_fraction * critical_time_step();
+}
+
+double ExperimentConfig::skin() const { return numerics.skin_fraction * material.sizes.max_diameter(); }
+
+std::int64_t ExperimentConfig::expected_particle_count() const {
+  if (pluviation.count > 0) return pluviation.count;
+  const double d = material.sizes.mean_diameter();
+  const double volume = std::numbers::pi / 6.0 * d * d * d;
+  return static_cast<std::int64_t>(pluviation.packing_fraction * box.width * box.depth * pluviation.fill_height / volume);
+}
+
+}  // namespace trapdem

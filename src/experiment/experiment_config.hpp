@@ -1,0 +1,98 @@
+#pragma once
+// The trapdoor experiment's configuration: geometry, materials, stages, numerics and output, read
+// from TOML through the strict parameter dictionary (every key documented in docs/config.md).
+#include <cstdint>
+#include <string>
+#include <vector>
+
+#include "dem/contact_law.hpp"
+#include "experiment/size_distribution.hpp"
+
+namespace trapdem {
+
+class Config;
+
+struct BoxConfig {
+  double width = 0.325;        // m (x)
+  double depth = 0.0182;       // m (y), between the front window and the back plate
+  double height = 0.36;        // m (z), above the base
+  bool periodic_depth = false; // no front and back walls: the depth is periodic
+};
+
+struct TrapdoorConfig {
+  double width = 0.05;         // m
+  double centre = 0.1625;      // m, x of its centre (default: the middle of the box)
+  double travel = 0.08;        // m, downward displacement at the end of the run
+  double rate = 0.05;          // m/s, constant lowering velocity
+  double cavity_depth = 0.09;  // m, depth of the cavity below the base (default: travel + 10 mm)
+};
+
+struct MaterialConfig {
+  double density = 2500.0;     // kg/m^3 of the solid
+  SizeDistribution sizes = SizeDistribution::single(0.002);
+  ContactLaw particle;         // particle-particle (Table 2)
+  ContactLaw base;             // particle against the base, trapdoor, cavity and side walls
+  ContactLaw front;            // particle against the front window (glass)
+  ContactLaw back;             // particle against the back plate (aluminium)
+};
+
+struct PluviationConfig {
+  std::int64_t count = 0;      // particles to pour (0: pour until fill_height)
+  double fill_height = 0.0;    // m, estimated surface height that ends the pour (0: by count)
+  double drop_height = 0.2;    // m, free fall from the hopper: particles enter at sqrt(2 g h)
+  double flow_rate = 0.0;      // kg/s (0: as fast as the hopper band allows)
+  double packing_fraction = 0.6; // assumed solid fraction of the deposit, for the surface estimate
+  std::uint64_t seed = 1;
+};
+
+struct SettlingConfig {
+  double energy_ratio = 1e-6;  // settled when translational kinetic / potential energy falls below it
+  double min_time = 0.01;      // s
+  double max_time = 0.5;       // s; beyond it the stage ends with a warning
+};
+
+struct SpinUpConfig {
+  double g_level = 50.0;       // final gravity in multiples of 9.81 m/s^2
+  double ramp_time = 0.05;     // s, linear ramp from 1 g
+};
+
+struct NumericsConfig {
+  double time_step = 0.0;            // s (0: time_step_fraction of the critical step)
+  double time_step_fraction = 0.2;   // of sqrt(m_min / k_max)
+  double skin_fraction = 0.2;        // Verlet skin, fraction of the largest diameter
+  double max_overlap_fraction = 0.25;
+  int threads = 0;                   // 0: all cores
+};
+
+struct OutputConfig {
+  std::vector<double> snapshot_displacements{0.0, 0.005, 0.01, 0.02, 0.04, 0.08};  // m
+  double ground_reaction_step = 0.0005;  // m of trapdoor travel between trapdoor.csv rows
+  double checkpoint_interval = 600.0;    // s of wall-clock time
+  double log_interval = 10.0;            // s of wall-clock time between progress lines
+};
+
+struct ExperimentConfig {
+  std::string name = "trapdoor";
+  std::string description;
+  BoxConfig box;
+  TrapdoorConfig trapdoor;
+  MaterialConfig material;
+  PluviationConfig pluviation;
+  SettlingConfig settling;
+  SpinUpConfig spin_up;
+  NumericsConfig numerics;
+  OutputConfig output;
+
+  static constexpr double standard_gravity = 9.81;  // m/s^2, 1 g
+
+  // Reads every section, checks ranges and consistency, reports unknown keys (file:line) and
+  // adds the derived values (time step, particle count, critical step) to the resolved record.
+  static ExperimentConfig from(Config& config);
+
+  double critical_time_step() const;  // s, sqrt(m_min / k_max)
+  double time_step() const;           // s
+  double skin() const;                // m
+  std::int64_t expected_particle_count() const;
+};
+
+}  // namespace trapdem

@@ -1,0 +1,114 @@
+#include "experiment/pluviation.hpp"
+
+#include <algorithm>
+#include <bit>
+#include <cmath>
+#include <numbers>
+#include <random>
+
+#include <fmt/format.h>
+
+#include "dem/errors.hpp"
+
+namespace trapdem {
+
+Hopper::Hopper(const ExperimentConfig& c) : config_(&c) {
+  const double g = ExperimentConfig::standard_gravity;
+  entry_speed_ = std::sqrt(2.0 * g * c.pluviation.drop_height);
+  spacing_ = 1.1 * c.material.sizes.max_diameter();
+  // The time for a layer to fall one spacing: s = v t + g t^2 / 2.
+  interval_ = (-entry_speed_ + std::sqrt(entry_speed_ * entry_speed_ + 2.0 * g * spacing_)) / g;
+}
+
+double Hopper::surface_height() const {
+  const ExperimentConfig& c = *config_;
+  return inserted_mass_ / (c.material.density * c.pluviation.packing_fraction * c.box.width * c.box.depth);
+}
+
+bool Hopper::finished(const Simulation&) const {
+  const PluviationConfig& p = config_->pluviation;
+  if (p.count > 0 && inserted_ >= p.count) return true;
+  return p.fill_height > 0.0 && surface_height() >= p.fill_height;
+}
+
+std::size_t Hopper::pour(Simulation& sim) {
+  const ExperimentConfig& c = *config_;
+  if (sim.time() < next_time_ || finished(sim)) return 0;
+  const double elapsed = interval_;
+  next_time_ = sim.time() + interval_;
+
+  // The band sits two diameters above the highest particle that is not falling in the stream.
+  const Particles& p = sim.particles();
+  double top = 0.0;
+  for (std::size_t i = 0; i < p.size(); ++i)
+    if (p.velocity[i].z > -0.5 * entry_speed_ || entry_speed_ == 0.0) top = std::max(top, p.position[i].z + p.radius[i]);
+  const double z = std::min(top + 2.0 * c.material.sizes.max_diameter(), c.box.height + 3.0 * c.material.sizes.max_diameter());
+
+  // Sites on a grid across the box; a fresh generator per insertion keeps the pour reproducible
+  // from a checkpoint without storing generator state.
+  std::seed_seq seed{std::uint64_t(c.pluviation.seed), std::uint64_t(event_)};
+  std::mt19937_64 rng(seed);
+  const double margin = 0.5 * spacing_;
+  const int nx = std::max(1, int((c.box.width - 2.0 * margin) / spacing_) + 1);
+  const int ny = c.box.periodic_depth ? std::max(1, int(c.box.depth / spacing_))
+                                      : std::max(1, int((c.box.depth - 2.0 * margin) / spacing_) + 1);
+  std::vector<int> sites(std::size_t(nx) * ny);
+  for (std::size_t k = 0; k < sites.size(); ++k) sites[k] = int(k);
+  std::shuffle(sites.begin(), sites.end(), rng);
+
+  const double density = c.material.density;
+  if (c.pluviation.flow_rate > 0.0) mass_budget_ += c.pluviation.flow_rate * elapsed;
+  std::uniform_real_distribution<double> jitter(-0.04, 0.04);
+  std::size_t count = 0;
+  for (int site : sites) {
+    if (c.pluviation.count > 0 && inserted_ >= c.pluviation.count) break;
+    if (c.pluviation.fill_height > 0.0 && surface_height() >= c.pluviation.fill_height) break;
+    const double d = c.material.sizes.sample(rng);
+    const double mass = density * std::numbers::pi / 6.0 * d * d * d;
+    if (c.pluviation.flow_rate > 0.0 && mass_budget_ < mass) break;
+    const int ix = site % nx, iy = site / nx;
+    const double y0 = c.box.periodic_depth ? 0.5 * spacing_ : margin;
+    const Vec3 x{margin + ix * spacing_ + jitter(rng) * spacing_, y0 + iy * spacing_ + jitter(rng) * spacing_,
+                 z + jitter(rng) * spacing_};
+    const std::int64_t id = inserted_ + 1;
+    sim.add_particle(id, x, 0.5 * d, density, Vec3{0.0, 0.0, -entry_speed_});
+    if (c.pluviation.flow_rate > 0.0) mass_budget_ -= mass;
+    inserted_mass_ += mass;
+    ++inserted_;
+    ++count;
+  }
+  // Sites ran out before the budget: the band cannot pass the flow rate asked for.
+  if (c.pluviation.flow_rate > 0.0 && count == sites.size() && mass_budget_ > 0.0) {
+    band_limited_ = true;
+    mass_budget_ = 0.0;
+  }
+  ++event_;
+  return count;
+}
+
+std::map<std::string, std::string> Hopper::state() const {
+  auto hex = [](double v) { return fmt::to_string(std::bit_cast<std::uint64_t>(v)); };
+  return {{"hopper.next_time", hex(next_time_)},
+          {"hopper.mass_budget", hex(mass_budget_)},
+          {"hopper.inserted_mass", hex(inserted_mass_)},
+          {"hopper.event", fmt::to_string(event_)},
+          {"hopper.inserted", fmt::to_string(inserted_)},
+          {"hopper.band_limited", band_limited_ ? "1" : "0"}};
+}
+
+void Hopper::restore(const std::map<std::string, std::string>& s) {
+  auto get = [&](const char* key) -> const std::string& {
+    auto it = s.find(key);
+    if (it == s.end()) throw InputError(std::string("checkpoint: missing hopper state '") + key + "'");
+    return it->second;
+  };
+  auto dbl = [&](const char* key) { return std::bit_cast<double>(std::stoull(get(key))); };
+  next_time_ = dbl("hopper.next_time");
+  mass_budget_ = dbl("hopper.mass_budget");
+  inserted_mass_ = dbl("hopper.inserted_mass");
+  event_ = std::stoll(get("hopper.event"));
+  inserted_ = std::stoll(get("hopper.inserted"));
+  band_limited_ = get("hopper.band_limited") == "1";
+}
+
+}  // namespace trapdem

@@ -1,0 +1,354 @@
+#include "experiment/trapdoor_experiment.hpp"
+
+#include <algorithm>
+#include <bit>
+#include <chrono>
+#include <cmath>
+
+#include <fmt/format.h>
+
+#include "dem/errors.hpp"
+#include "experiment/strongbox.hpp"
+
+namespace trapdem {
+
+namespace {
+
+constexpr std::int64_t kCheckEvery = 500;  // steps between energy checks and load windows
+
+double wall_clock() {
+  return std::chrono::duration<double>(std::chrono::steady_clock::now().time_since_epoch()).count();
+}
+
+std::string bits(double v) { return fmt::to_string(std::bit_cast<std::uint64_t>(v)); }
+
+}  // namespace
+
+const char* stage_name(Stage s) {
+  switch (s) {
+    case Stage::pluviation: return "pluviation";
+    case Stage::settling: return "settling";
+    case Stage::spin_up: return "spin-up";
+    case Stage::lowering: return "lowering";
+    case Stage::done: return "done";
+  }
+  return "?";
+}
+
+TrapdoorExperiment::TrapdoorExperiment(ExperimentConfig config) : config_(std::move(config)), hopper_(config_) {
+  SimulationSettings s;
+  s.time_step = config_.time_step();
+  s.skin = config_.skin();
+  s.domain = strongbox_domain(config_);
+  s.max_overlap_fraction = config_.numerics.max_overlap_fraction;
+  sim_ = std::make_unique<Simulation>(Particles{}, config_.material.particle, s);
+  for (Wall& w : strongbox_walls_for(config_)) sim_->add_wall(std::move(w));
+  trapdoor_wall_ = sim_->find_wall(strongbox_walls::trapdoor);
+  base_left_wall_ = sim_->find_wall(strongbox_walls::base_left);
+  base_right_wall_ = sim_->find_wall(strongbox_walls::base_right);
+  const double depth = config_.box.depth, b = config_.trapdoor.width, xc = config_.trapdoor.centre;
+  trapdoor_area_ = b * depth;
+  base_left_area_ = (xc - 0.5 * b) * depth;
+  base_right_area_ = (config_.box.width - xc - 0.5 * b) * depth;
+  start_stage(Stage::pluviation);
+}
+
+double TrapdoorExperiment::trapdoor_displacement() const { return -sim_->walls()[trapdoor_wall_].displacement.z; }
+
+void TrapdoorExperiment::install_gravity() {
+  const double g1 = ExperimentConfig::standard_gravity;
+  const double gn = config_.spin_up.g_level * g1;
+  switch (stage_) {
+    case Stage::pluviation:
+    case Stage::settling: sim_->set_gravity(Vec3{0, 0, -g1}); break;
+    case Stage::spin_up: {
+      const double t0 = stage_start_time_, ramp = config_.spin_up.ramp_time;
+      // The centrifuge spins up: gravity grows linearly from 1 g to the target over the ramp time.
+      sim_->set_gravity([=](double t) {
+        const double f = ramp > 0.0 ? std::clamp((t - t0) / ramp, 0.0, 1.0) : 1.0;
+        return Vec3{0, 0, -(g1 + (gn - g1) * f)};
+      });
+      break;
+    }
+    case Stage::lowering:
+    case Stage::done: sim_->set_gravity(Vec3{0, 0, -gn}); break;
+  }
+  Wall& door = sim_->wall(trapdoor_wall_);
+  if (stage_ == Stage::lowering) {
+    const double rate = config_.trapdoor.rate;
+    door.velocity = [rate](double) { return Vec3{0, 0, -rate}; };
+  } else {
+    door.velocity = nullptr;
+  }
+}
+
+void TrapdoorExperiment::start_stage(Stage stage) {
+  stage_ = stage;
+  stage_start_time_ = sim_->time();
+  spin_up_ramp_done_ = false;
+  last_energy_ratio_ = 1.0;
+  window_trapdoor_ = window_left_ = window_right_ = 0.0;
+  window_steps_ = 0;
+  install_gravity();
+  clock_start_ = wall_clock();
+  steps_at_clock_start_ = sim_->step_count();
+  fraction_at_clock_start_ = 0.0;
+  stage_at_clock_start_ = stage;
+}
+
+bool TrapdoorExperiment::settled(double& ratio) const {
+  const double potential = sim_->potential_energy(0.0);
+  ratio = potential > 0.0 ? sim_->translational_kinetic_energy() / potential : 0.0;
+  return ratio < config_.settling.energy_ratio;
+}
+
+BaseLoad TrapdoorExperiment::wall_load(std::size_t wall, double area, double reference_stress) const {
+  const double window = std::max<std::int64_t>(window_steps_, 1);
+  const double sum = wall == trapdoor_wall_ ? window_trapdoor_ : (wall == base_left_wall_ ? window_left_ : window_right_);
+  BaseLoad load;
+  load.force = sum / window;
+  load.stress = load.force / area;
+  load.ratio = reference_stress > 0.0 ? load.stress / reference_stress : 0.0;
+  return load;
+}
+
+void TrapdoorExperiment::begin_lowering(ExperimentObserver& observer) {
+  geostatic_trapdoor_ = wall_load(trapdoor_wall_, trapdoor_area_, 0.0).stress;
+  geostatic_left_ = wall_load(base_left_wall_, base_left_area_, 0.0).stress;
+  geostatic_right_ = wall_load(base_right_wall_, base_right_area_, 0.0).stress;
+  GroundReactionRow first;
+  first.time = sim_->time();
+  first.trapdoor = wall_load(trapdoor_wall_, trapdoor_area_, geostatic_trapdoor_);
+  first.geostatic_stress = geostatic_trapdoor_;
+  first.base_left = wall_load(base_left_wall_, base_left_area_, geostatic_left_);
+  first.base_right = wall_load(base_right_wall_, base_right_area_, geostatic_right_);
+  rows_ = {first};
+  next_row_ = 1;
+  next_snapshot_ = 0;
+  start_stage(Stage::lowering);
+  observer.ground_reaction_row(first, rows_);
+}
+
+bool TrapdoorExperiment::run(ExperimentObserver& observer) {
+  clock_start_ = wall_clock();
+  steps_at_clock_start_ = sim_->step_count();
+  stage_at_clock_start_ = stage_;
+  report(observer, true);
+  while (stage_ != Stage::done) {
+    if (observer.stop_requested()) {
+      observer.checkpoint(state());
+      return false;
+    }
+    if (observer.checkpoint_due()) observer.checkpoint(state());
+    advance(observer);
+    if (sim_->step_count() % 200 == 0) report(observer, false);
+  }
+  report(observer, true);
+  return true;
+}
+
+bool TrapdoorExperiment::advance(ExperimentObserver& observer) {
+  const double t = sim_->time() - stage_start_time_;
+  switch (stage_) {
+    case Stage::pluviation: {
+      hopper_.pour(*sim_);
+      sim_->step();
+      if (hopper_.finished(*sim_)) {
+        observer.stage_finished(stage_, fmt::format("{} particles poured ({:.4g} kg), surface at about {:.1f} mm{}",
+                                                    hopper_.inserted(), hopper_.inserted_mass(),
+                                                    hopper_.surface_height() * 1e3,
+                                                    hopper_.flow_limited_by_band()
+                                                        ? "; the flow rate asked for exceeded what the hopper band passes"
+                                                        : ""));
+        observer.snapshot_due(stage_name(stage_));
+        start_stage(Stage::settling);
+      }
+      return true;
+    }
+    case Stage::settling: {
+      sim_->step();
+      if (sim_->step_count() % kCheckEvery != 0) return true;
+      const bool calm = settled(last_energy_ratio_);
+      if ((calm && t >= config_.settling.min_time) || t >= config_.settling.max_time) {
+        observer.stage_finished(stage_, fmt::format("kinetic/potential energy {:.3g} after {:.4g} s{}",
+                                                    last_energy_ratio_, t,
+                                                    calm ? "" : " (max_time reached before the energy criterion)"));
+        observer.snapshot_due(stage_name(stage_));
+        start_stage(Stage::spin_up);
+      }
+      return true;
+    }
+    case Stage::spin_up: {
+      sim_->step();
+      window_trapdoor_ -= sim_->walls()[trapdoor_wall_].force.z;
+      window_left_ -= sim_->walls()[base_left_wall_].force.z;
+      window_right_ -= sim_->walls()[base_right_wall_].force.z;
+      ++window_steps_;
+      if (!spin_up_ramp_done_ && t >= config_.spin_up.ramp_time) spin_up_ramp_done_ = true;
+      if (sim_->step_count() % kCheckEvery != 0) return true;
+      const bool calm = settled(last_energy_ratio_);
+      const double since_ramp = t - config_.spin_up.ramp_time;
+      if (spin_up_ramp_done_ &&
+          ((calm && since_ramp >= config_.settling.min_time) || since_ramp >= config_.settling.max_time)) {
+        observer.stage_finished(stage_, fmt::format("{:.4g} g reached; kinetic/potential energy {:.3g}{}",
+                                                    config_.spin_up.g_level, last_energy_ratio_,
+                                                    calm ? "" : " (max_time reached before the energy criterion)"));
+        const auto& targets = config_.output.snapshot_displacements;
+        if (targets.empty() || targets.front() > 0.0) observer.snapshot_due(stage_name(stage_));
+        begin_lowering(observer);
+        return true;
+      }
+      window_trapdoor_ = window_left_ = window_right_ = 0.0;  // the reference is the last window's mean
+      window_steps_ = 0;
+      return true;
+    }
+    case Stage::lowering: {
+      const auto& targets = config_.output.snapshot_displacements;
+      const double eps = 1e-12;
+      while (next_snapshot_ < targets.size() && trapdoor_displacement() >= targets[next_snapshot_] - eps) {
+        observer.snapshot_due(stage_name(stage_));
+        ++next_snapshot_;
+      }
+      sim_->step();
+      window_trapdoor_ -= sim_->walls()[trapdoor_wall_].force.z;
+      window_left_ -= sim_->walls()[base_left_wall_].force.z;
+      window_right_ -= sim_->walls()[base_right_wall_].force.z;
+      ++window_steps_;
+      const double s = trapdoor_displacement();
+      const bool finished = s >= config_.trapdoor.travel - eps;
+      if (s >= next_row_ * config_.output.ground_reaction_step - eps || finished) {
+        GroundReactionRow row;
+        row.time = sim_->time();
+        row.trapdoor_displacement = s;
+        row.trapdoor = wall_load(trapdoor_wall_, trapdoor_area_, geostatic_trapdoor_);
+        row.geostatic_stress = geostatic_trapdoor_;
+        row.base_left = wall_load(base_left_wall_, base_left_area_, geostatic_left_);
+        row.base_right = wall_load(base_right_wall_, base_right_area_, geostatic_right_);
+        rows_.push_back(row);
+        observer.ground_reaction_row(row, rows_);
+        window_trapdoor_ = window_left_ = window_right_ = 0.0;
+        window_steps_ = 0;
+        while (next_row_ * config_.output.ground_reaction_step <= s + eps) ++next_row_;
+      }
+      if (finished) {
+        while (next_snapshot_ < targets.size() && s >= targets[next_snapshot_] - eps) ++next_snapshot_;
+        observer.snapshot_due(stage_name(stage_));
+        const GroundReactionRow& last = rows_.back();
+        observer.stage_finished(stage_, fmt::format("trapdoor lowered {:.2f} mm; trapdoor stress {:.4g} Pa = {:.3f} of "
+                                                    "the {:.4g} Pa before lowering",
+                                                    s * 1e3, last.trapdoor.stress, last.trapdoor.ratio,
+                                                    geostatic_trapdoor_));
+        stage_ = Stage::done;
+        install_gravity();
+      }
+      return true;
+    }
+    case Stage::done: return false;
+  }
+  return false;
+}
+
+void TrapdoorExperiment::report(ExperimentObserver& observer, bool force) {
+  const double now = wall_clock();
+  if (!force && now - last_report_clock_ < config_.output.log_interval) return;
+  last_report_clock_ = now;
+  StageProgress p;
+  p.stage = stage_;
+  p.simulated_time = sim_->time();
+  const double t = sim_->time() - stage_start_time_;
+  auto energy_fraction = [&] {
+    const double target = config_.settling.energy_ratio;
+    if (last_energy_ratio_ <= target) return 1.0;
+    return std::clamp(std::log(1.0 / last_energy_ratio_) / std::log(1.0 / target), 0.0, 0.99);
+  };
+  switch (stage_) {
+    case Stage::pluviation: {
+      const double expected = double(std::max<std::int64_t>(config_.expected_particle_count(), 1));
+      p.fraction = std::min(1.0, double(hopper_.inserted()) / expected);
+      p.detail = fmt::format("{} particles poured, surface about {:.1f} mm", hopper_.inserted(),
+                             hopper_.surface_height() * 1e3);
+      break;
+    }
+    case Stage::settling:
+      p.fraction = energy_fraction();
+      p.detail = fmt::format("kinetic/potential energy {:.2e} (target {:.1e})", last_energy_ratio_,
+                             config_.settling.energy_ratio);
+      break;
+    case Stage::spin_up: {
+      const double ramp = config_.spin_up.ramp_time;
+      const double g = -sim_->gravity().z / ExperimentConfig::standard_gravity;
+      p.fraction = spin_up_ramp_done_ ? 0.5 + 0.5 * energy_fraction() : (ramp > 0.0 ? 0.5 * std::min(1.0, t / ramp) : 0.5);
+      p.detail = fmt::format("gravity {:.1f} g, kinetic/potential energy {:.2e}", g, last_energy_ratio_);
+      break;
+    }
+    case Stage::lowering:
+    case Stage::done:
+      p.fraction = std::min(1.0, trapdoor_displacement() / config_.trapdoor.travel);
+      p.detail = fmt::format("trapdoor at {:.2f} mm, stress ratio {:.3f}", trapdoor_displacement() * 1e3,
+                             rows_.empty() ? 1.0 : rows_.back().trapdoor.ratio);
+      break;
+  }
+  const double elapsed = now - clock_start_;
+  const std::int64_t steps = sim_->step_count() - steps_at_clock_start_;
+  if (elapsed > 0.0) p.particle_steps_per_second = double(sim_->particles().size()) * double(steps) / elapsed;
+  if (stage_at_clock_start_ != stage_) {
+    clock_start_ = now;
+    steps_at_clock_start_ = sim_->step_count();
+    fraction_at_clock_start_ = p.fraction;
+    stage_at_clock_start_ = stage_;
+  } else if (stage_ == Stage::lowering && steps > 0) {
+    const double steps_left = (config_.trapdoor.travel - trapdoor_displacement()) / (config_.trapdoor.rate * sim_->time_step());
+    p.seconds_left = steps_left * elapsed / double(steps);
+  } else if (p.fraction > fraction_at_clock_start_ + 1e-6) {
+    p.seconds_left = (1.0 - p.fraction) * elapsed / (p.fraction - fraction_at_clock_start_);
+  }
+  observer.progress(p);
+}
+
+std::map<std::string, std::string> TrapdoorExperiment::state() const {
+  std::map<std::string, std::string> s = hopper_.state();
+  s["experiment.stage"] = fmt::to_string(int(stage_));
+  s["experiment.stage_start_time"] = bits(stage_start_time_);
+  s["experiment.spin_up_ramp_done"] = fmt::to_string(int(spin_up_ramp_done_));
+  s["experiment.last_energy_ratio"] = bits(last_energy_ratio_);
+  s["experiment.window_trapdoor"] = bits(window_trapdoor_);
+  s["experiment.window_left"] = bits(window_left_);
+  s["experiment.window_right"] = bits(window_right_);
+  s["experiment.window_steps"] = fmt::to_string(window_steps_);
+  s["experiment.geostatic_trapdoor"] = bits(geostatic_trapdoor_);
+  s["experiment.geostatic_left"] = bits(geostatic_left_);
+  s["experiment.geostatic_right"] = bits(geostatic_right_);
+  s["experiment.next_snapshot"] = fmt::to_string(next_snapshot_);
+  s["experiment.next_row"] = fmt::to_string(next_row_);
+  s["experiment.ground_reaction_csv"] = ground_reaction_csv(rows_);
+  return s;
+}
+
+void TrapdoorExperiment::restore(const std::map<std::string, std::string>& s) {
+  auto get = [&](const std::string& key) -> const std::string& {
+    auto it = s.find(key);
+    if (it == s.end()) throw InputError(fmt::format("checkpoint: missing experiment state '{}'", key));
+    return it->second;
+  };
+  auto dbl = [&](const std::string& key) { return std::bit_cast<double>(std::stoull(get(key))); };
+  hopper_.restore(s);
+  const int stage = std::stoi(get("experiment.stage"));
+  if (stage < 0 || stage > int(Stage::done)) throw InputError("checkpoint: unknown experiment stage");
+  stage_ = Stage(stage);
+  stage_start_time_ = dbl("experiment.stage_start_time");
+  spin_up_ramp_done_ = get("experiment.spin_up_ramp_done") == "1";
+  last_energy_ratio_ = dbl("experiment.last_energy_ratio");
+  window_trapdoor_ = dbl("experiment.window_trapdoor");
+  window_left_ = dbl("experiment.window_left");
+  window_right_ = dbl("experiment.window_right");
+  window_steps_ = std::stoll(get("experiment.window_steps"));
+  geostatic_trapdoor_ = dbl("experiment.geostatic_trapdoor");
+  geostatic_left_ = dbl("experiment.geostatic_left");
+  geostatic_right_ = dbl("experiment.geostatic_right");
+  next_snapshot_ = std::stoul(get("experiment.next_snapshot"));
+  next_row_ = std::stoll(get("experiment.next_row"));
+  rows_ = parse_ground_reaction_csv(get("experiment.ground_reaction_csv"), "checkpoint ground reaction");
+  install_gravity();
+}
+
+}  // namespace trapdem
