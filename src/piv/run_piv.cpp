@@ -4,6 +4,7 @@
 #include <cmath>
 #include <memory>
 #include <optional>
+#include <sstream>
 
 #include "dem/errors.hpp"
 #include "piv/image_pair.hpp"
@@ -135,11 +136,12 @@ PivResult run_piv(std::size_t count, const std::function<GreyImage(std::size_t)>
   for (std::size_t k = 1; k < count; ++k) {
     start_time = Clock::now();
     const GreyImage grey = load(k);
-    if (grey.width() != width || grey.height() != height)
-      throw InputError("PIV: image " + name(k) + " is " + std::to_string(grey.width()) + " x " +
-                       std::to_string(grey.height()) + " px but " + name(0) + " is " +
-                       std::to_string(width) + " x " + std::to_string(height) +
-                       " px; all images must have the same size");
+    if (grey.width() != width || grey.height() != height) {
+      std::ostringstream message;
+      message << "PIV: image " << name(k) << " is " << grey.width() << " x " << grey.height() << " px but "
+              << name(0) << " is " << width << " x " << height << " px; all images must have the same size";
+      throw InputError(message.str());
+    }
     auto current = std::make_shared<const PreparedImage>(prepare_image(grey));
 
     ImageMeasurements measured;
@@ -204,12 +206,20 @@ PivResult run_piv(const std::vector<cv::Mat>& images, const PivSettings& setting
 PivResult run_piv(const std::vector<std::filesystem::path>& files, const PivSettings& settings,
                   const PivProgress& progress) {
   for (const auto& f : files)
-    if (!is_readable_image(f))
-      throw InputError("PIV image '" + f.string() + "': " +
-                       (std::filesystem::exists(f) ? "not an image format OpenCV can read" : "no such file"));
+    if (!is_readable_image(f)) {
+      std::ostringstream message;
+      message << "PIV image '" << f.string() << "': "
+              << (std::filesystem::exists(f) ? "not an image format OpenCV can read" : "no such file");
+      throw InputError(message.str());
+    }
   return run_piv(
       files.size(), [&](std::size_t k) { return read_grey_image(files[k]); },
-      [&](std::size_t k) { return "'" + files[k].string() + "'"; }, settings, progress);
+      [&](std::size_t k) {
+        std::ostringstream quoted;
+        quoted << '\'' << files[k].string() << '\'';
+        return quoted.str();
+      },
+      settings, progress);
 }
 
 }  // namespace trapdem
