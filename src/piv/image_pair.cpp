@@ -13,9 +13,10 @@ namespace trapdem {
 
 namespace {
 
-int thread_count(const PivSettings& s) {
+// OpenMP threads for a requested count (0: OpenMP's default).
+int thread_count(int requested) {
 #ifdef _OPENMP
-  return s.threads > 0 ? s.threads : omp_get_max_threads();
+  return requested > 0 ? requested : omp_get_max_threads();
 #else
   return 1;
 #endif
@@ -55,7 +56,7 @@ bool is_accepted(const PairSolution& s, bool textured, double min_valid_zncc) {
 
 ReferenceSubsets make_reference_subsets(const PreparedImage& reference, const std::vector<cv::Point2d>& centres,
                                         const std::vector<bool>& alive, int subset_size,
-                                        const TextureCriteria& criteria) {
+                                        const TextureCriteria& criteria, int threads) {
   const std::size_t n = centres.size();
   ReferenceSubsets out;
   out.subset_size = subset_size;
@@ -63,7 +64,7 @@ ReferenceSubsets make_reference_subsets(const PreparedImage& reference, const st
   out.intensity_std.assign(n, std::numeric_limits<double>::quiet_NaN());
   out.sum_squared_gradient.assign(n, std::numeric_limits<double>::quiet_NaN());
   std::vector<char> present(n, 0), textured(n, 0);
-#pragma omp parallel for schedule(dynamic, 64)
+#pragma omp parallel for schedule(dynamic, 64) num_threads(thread_count(threads))
   for (std::ptrdiff_t i = 0; i < static_cast<std::ptrdiff_t>(n); ++i) {
     if (!alive[i]) continue;
     const auto s = make_reference_subset(reference.spline, centres[i], subset_size);
@@ -84,7 +85,7 @@ std::vector<PairSolution> solve_image_pair(const SubsetGrid& grid, const Referen
                                            const std::vector<cv::Point2d>& prediction, const PivSettings& settings) {
   const std::size_t n = grid.size();
   const std::ptrdiff_t count = static_cast<std::ptrdiff_t>(n);
-  const int threads = thread_count(settings);
+  const int threads = thread_count(settings.threads);
   std::vector<PairSolution> solution(n);
   auto accepted = [&](std::size_t i) { return is_accepted(solution[i], refs.textured[i], settings.min_valid_zncc); };
 

@@ -37,7 +37,7 @@ struct ReferenceSubsets {
 
 ReferenceSubsets make_reference_subsets(const PreparedImage& reference, const std::vector<cv::Point2d>& centres,
                                         const std::vector<bool>& alive, int subset_size,
-                                        const TextureCriteria& criteria);
+                                        const TextureCriteria& criteria, int threads = 0);
 
 struct PairSolution {
   bool attempted = false;  // at least one IC-GN run

@@ -34,7 +34,7 @@ Reference make_reference(std::size_t index, std::shared_ptr<const PreparedImage>
   r.total = total;
   r.centre.resize(grid.size());
   for (std::size_t i = 0; i < grid.size(); ++i) r.centre[i] = grid.centre[i] + total[i];
-  r.subsets = make_reference_subsets(*r.image, r.centre, alive, grid.subset_size, settings.texture);
+  r.subsets = make_reference_subsets(*r.image, r.centre, alive, grid.subset_size, settings.texture, settings.threads);
   return r;
 }
 
