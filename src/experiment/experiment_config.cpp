@@ -42,12 +42,8 @@ SizeDistribution read_sizes(Config& p) {
     if (hi < lo) throw p.error("max_diameter", fmt::format("a size >= min_diameter ({} m)", lo));
     return SizeDistribution::uniform(lo, hi);
   }
-  const auto rows = p.require_vector<std::vector<double>>("grading");
   std::vector<std::pair<double, double>> table;
-  for (const auto& row : rows) {
-    if (row.size() != 2) throw p.error("grading", "rows of two numbers: [diameter in m, percent passing]");
-    table.emplace_back(row[0], row[1]);
-  }
+  for (const auto& row : p.require_rows("grading", 2, "diameter in m, percent passing")) table.emplace_back(row[0], row[1]);
   return SizeDistribution::grading(std::move(table), p.source_name() + ": particles.grading");
 }
 

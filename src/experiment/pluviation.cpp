@@ -56,6 +56,22 @@ std::size_t Hopper::pour(Simulation& sim) {
   for (std::size_t k = 0; k < sites.size(); ++k) sites[k] = int(k);
   std::shuffle(sites.begin(), sites.end(), rng);
 
+  // Particles already near the band (bouncing back up from the deposit, or the last layer not yet
+  // clear): a site that would overlap one of them is skipped in this insertion.
+  const double d_max = c.material.sizes.max_diameter();
+  std::vector<std::size_t> nearby;
+  for (std::size_t i = 0; i < p.size(); ++i)
+    if (std::fabs(p.position[i].z - z) < 2.0 * d_max) nearby.push_back(i);
+  auto free_at = [&](const Vec3& x, double r) {
+    for (std::size_t i : nearby) {
+      Vec3 d = x - p.position[i];
+      if (c.box.periodic_depth) d = sim.settings().domain.minimum_image(d);
+      const double reach = r + p.radius[i] + 0.05 * d_max;
+      if (norm2(d) < reach * reach) return false;
+    }
+    return true;
+  };
+
   const double density = c.material.density;
   if (c.pluviation.flow_rate > 0.0) mass_budget_ += c.pluviation.flow_rate * elapsed;
   std::uniform_real_distribution<double> jitter(-0.04, 0.04);
@@ -70,6 +86,7 @@ std::size_t Hopper::pour(Simulation& sim) {
     const double y0 = c.box.periodic_depth ? 0.5 * spacing_ : margin;
     const Vec3 x{margin + ix * spacing_ + jitter(rng) * spacing_, y0 + iy * spacing_ + jitter(rng) * spacing_,
                  z + jitter(rng) * spacing_};
+    if (!free_at(x, 0.5 * d)) continue;
     const std::int64_t id = inserted_ + 1;
     sim.add_particle(id, x, 0.5 * d, density, Vec3{0.0, 0.0, -entry_speed_});
     if (c.pluviation.flow_rate > 0.0) mass_budget_ -= mass;

@@ -445,6 +445,34 @@ std::vector<T> Config::require_vector(std::string_view key, std::string_view uni
   return get_vector<T>(key, {}, unit, range);
 }
 
+std::vector<std::vector<double>> Config::require_rows(std::string_view key, std::size_t columns,
+                                                      std::string_view row_meaning) {
+  const std::string k = full_key(key);
+  const std::string expected = fmt::format("an array of rows, each [{}]", row_meaning);
+  if (!has(key)) missing(*state_, k, expected);
+  state_->used.insert(k);
+  const toml::node* node = find(*state_, k);
+  auto array = node->as_array();
+  if (!array || array->empty()) wrong(*state_, k, *node, expected);
+  std::vector<std::vector<double>> rows;
+  toml::array resolved;
+  for (std::size_t r = 0; r < array->size(); ++r) {
+    const std::string row_key = fmt::format("{}[{}]", k, r);
+    auto row = array->get(r)->as_array();
+    if (!row || row->size() != columns) wrong(*state_, row_key, *array->get(r), fmt::format("[{}]", row_meaning));
+    std::vector<double> values;
+    toml::array resolved_row;
+    for (std::size_t c = 0; c < columns; ++c) {
+      values.push_back(number_of(*state_, fmt::format("{}[{}]", row_key, c), *row->get(c), {}, Range::any()));
+      resolved_row.push_back(values.back());
+    }
+    rows.push_back(std::move(values));
+    resolved.push_back(std::move(resolved_row));
+  }
+  record(*state_, k, std::move(resolved), {});
+  return rows;
+}
+
 template std::vector<double> Config::require_vector(std::string_view, std::string_view, Range);
 template std::vector<std::int64_t> Config::require_vector(std::string_view, std::string_view, Range);
 template std::vector<std::string> Config::require_vector(std::string_view, std::string_view, Range);

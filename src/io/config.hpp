@@ -80,6 +80,10 @@ class Config {
 
   // A view of a sub-table (it need not exist: its look-ups then give their defaults). Throws if
   // `key` holds something other than a table.
+  // A table of number rows with `columns` entries each (a grading: [[d, percent], ...]);
+  // `row_meaning` names the columns for the error message ("diameter in m, percent passing").
+  std::vector<std::vector<double>> require_rows(std::string_view key, std::size_t columns, std::string_view row_meaning);
+
   Config get_table(std::string_view key);
   bool has(std::string_view key) const;
   // The names of a table's entries as written (for tables keyed by user names, e.g. materials).
