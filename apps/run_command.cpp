@@ -41,8 +41,8 @@ std::string format_duration(double s) {
 // Writes the run's files as the experiment reports its events.
 class RunRecorder : public ExperimentObserver {
  public:
-  RunRecorder(TrapdoorExperiment& experiment, fs::path out, bool quiet, double stop_after)
-      : experiment_(experiment), out_(std::move(out)), quiet_(quiet), stop_after_(stop_after) {
+  RunRecorder(TrapdoorExperiment& experiment, fs::path out, bool quiet, double stop_after, std::int64_t stop_at_step)
+      : experiment_(experiment), out_(std::move(out)), quiet_(quiet), stop_after_(stop_after), stop_at_step_(stop_at_step) {
     log_.open(out_ / "run.log", std::ios::app);
     if (!log_) throw FileError(fmt::format("cannot open {} for writing", (out_ / "run.log").string()));
     started_ = last_checkpoint_ = now_seconds();
@@ -100,6 +100,7 @@ class RunRecorder : public ExperimentObserver {
 
   bool stop_requested() override {
     if (g_signal != 0) return true;
+    if (stop_at_step_ > 0 && experiment_.simulation().step_count() >= stop_at_step_) return true;
     return stop_after_ > 0.0 && (++stop_calls_ % 64 == 0) && now_seconds() - started_ >= stop_after_;
   }
 
@@ -108,6 +109,7 @@ class RunRecorder : public ExperimentObserver {
   fs::path out_;
   bool quiet_;
   double stop_after_;
+  std::int64_t stop_at_step_;
   std::ofstream log_;
   double started_ = 0.0, last_checkpoint_ = 0.0;
   bool checkpoint_wanted_ = false;
@@ -198,7 +200,7 @@ int run_experiment(const RunOptions& o) {
   if (threads > 0) omp_set_num_threads(threads);
 
   TrapdoorExperiment experiment(experiment_config);
-  RunRecorder recorder(experiment, out, o.quiet, o.stop_after_seconds);
+  RunRecorder recorder(experiment, out, o.quiet, o.stop_after_seconds, o.stop_at_step);
   const ExperimentConfig& c = experiment_config;
   if (resume) {
     Checkpoint ckpt = read_checkpoint(out / "checkpoint.h5");

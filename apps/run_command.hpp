@@ -1,6 +1,7 @@
 #pragma once
 // `trapdem run` and `trapdem presets`: the trapdoor experiment from configuration to saved,
 // resumable results.
+#include <cstdint>
 #include <filesystem>
 #include <string>
 #include <vector>
@@ -15,7 +16,8 @@ struct RunOptions {
   std::string resume_dir;               // continue the run in this folder from its checkpoint
   int threads = 0;                      // 0: the configuration's numerics.threads, else all cores
   bool quiet = false;                   // no progress lines on the terminal (run.log still has them)
-  double stop_after_seconds = 0.0;      // > 0: stop (with a checkpoint) after this much wall clock (tests)
+  double stop_after_seconds = 0.0;      // > 0: stop (with a checkpoint) after this much wall clock
+  std::int64_t stop_at_step = 0;        // > 0: stop (with a checkpoint) at this engine step (tests)
 };
 
 // Returns the process exit code; throws InputError / SimulationError / FileError on failure.
