@@ -24,7 +24,7 @@ test-slow: build
 	@cd $(BUILD) && ctest --output-on-failure -L slow
 
 demo: build
-	@./$(BUILD)/apps/trapdem showcase
+	@bash scripts/demo.sh $(BUILD)
 
 bench: build
 	@bash bench/run-bench.sh $(BUILD)

@@ -1,0 +1,19 @@
+#!/usr/bin/env bash
+# make demo: runs the default experiment (the demo preset) into trapdem-out/demo and prints what it
+# measured. An interrupted demo is resumed; a finished one is kept (remove the folder to run again).
+set -euo pipefail
+build=${1:-build}
+out=trapdem-out/demo
+trapdem="$build/apps/trapdem"
+if [ -f "$out/checkpoint.h5" ] && grep -q '^finished' "$out/run.log" 2>/dev/null; then
+  echo "make demo: $out holds a finished demo run (remove the folder to run it again):"
+elif [ -f "$out/checkpoint.h5" ]; then
+  echo "make demo: resuming the interrupted demo in $out"
+  "$trapdem" run --resume "$out"
+else
+  rm -rf "$out"
+  "$trapdem" run --out "$out"
+fi
+echo
+grep -E '^stage |^finished' "$out/run.log" || true
+echo "ground reaction curve: $out/trapdoor.csv; particles for ParaView: $out/snapshots.xmf"
