@@ -128,9 +128,13 @@ void Simulation::step() {
 
 // The partner shares start at zero; `pair_active_` mirrors the history's touching flag in one byte,
 // so that the many pairs in the list that do not touch cost no read of their history.
+// The partner shares are stored in the partner's incident order (`partner_slot_` maps a pair to its
+// place there), so that the gather reads each particle's shares contiguously.
 void Simulation::reset_pair_buffers() {
   pair_force_on_partner_.assign(pairs_.size(), Vec3{});
   pair_torque_on_partner_.assign(pairs_.size(), Vec3{});
+  partner_slot_.resize(pairs_.size());
+  for (std::size_t q = 0; q < pairs_.incident_pair.size(); ++q) partner_slot_[pairs_.incident_pair[q]] = std::uint32_t(q);
   pair_active_.resize(pairs_.size());
   for (std::size_t k = 0; k < pairs_.size(); ++k) pair_active_[k] = pairs_.history[k].flags != 0 ? 1 : 0;
 }
@@ -266,6 +270,7 @@ void Simulation::particle_contacts() {
   const std::uint32_t* partner = pairs_.partner.data();
   ContactHistory* history = pairs_.history.data();
   std::uint8_t* active = pair_active_.data();
+  const std::uint32_t* slot = partner_slot_.data();
   Vec3* f_partner = pair_force_on_partner_.data();
   Vec3* t_partner = pair_torque_on_partner_.data();
   double max_overlap = 0.0;
@@ -287,8 +292,8 @@ void Simulation::particle_contacts() {
         if (active[k]) {
           active[k] = 0;
           history[k].reset();
-          f_partner[k] = Vec3{};
-          t_partner[k] = Vec3{};
+          f_partner[slot[k]] = Vec3{};
+          t_partner[slot[k]] = Vec3{};
         }
         continue;
       }
@@ -312,8 +317,8 @@ void Simulation::particle_contacts() {
       const Vec3 n_x_ft = cross(normal, cf.tangential);
       fi += cf.force;
       ti += cf.rolling_torque - b.arm_i * n_x_ft;
-      f_partner[k] = -cf.force;
-      t_partner[k] = -cf.rolling_torque - b.arm_j * n_x_ft;
+      f_partner[slot[k]] = -cf.force;
+      t_partner[slot[k]] = -cf.rolling_torque - b.arm_j * n_x_ft;
     }
     f[i] = fi;
     t[i] = ti;
@@ -336,7 +341,6 @@ void Simulation::wall_contacts() {
   Vec3* f = p_.force.data();
   Vec3* t = p_.torque.data();
   const std::uint32_t* inc_first = pairs_.incident_first.data();
-  const std::uint32_t* inc_pair = pairs_.incident_pair.data();
   const Vec3* f_partner = pair_force_on_partner_.data();
   const Vec3* t_partner = pair_torque_on_partner_.data();
   const std::uint32_t* wfirst = wall_list_.first.data();
@@ -356,8 +360,8 @@ void Simulation::wall_contacts() {
     for (std::size_t i = 0; i < n; ++i) {
       Vec3 fi = f[i], ti = t[i];
       for (std::uint32_t q = inc_first[i]; q < inc_first[i + 1]; ++q) {
-        fi += f_partner[inc_pair[q]];
-        ti += t_partner[inc_pair[q]];
+        fi += f_partner[q];
+        ti += t_partner[q];
       }
       const std::uint32_t k0 = wfirst[i], count = wfirst[i + 1] - k0;
       if (count == 0) {  // most particles are away from every wall

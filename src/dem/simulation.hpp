@@ -115,8 +115,9 @@ class Simulation {
   WallList wall_list_;
   HistoryArchive pending_history_;            // archived before particles were removed
   bool history_pending_ = false;
-  std::vector<Vec3> pair_force_on_partner_;   // N, per pair: force on the partner (second body)
-  std::vector<Vec3> pair_torque_on_partner_;  // N m
+  std::vector<Vec3> pair_force_on_partner_;   // N, force on the partner (second body), in incident order
+  std::vector<Vec3> pair_torque_on_partner_;  // N m, likewise
+  std::vector<std::uint32_t> partner_slot_;   // pair -> its place in the incident order
   std::vector<std::uint8_t> pair_active_;     // 1 while the pair touches
   std::vector<Vec3> position_at_build_;
   std::vector<Vec3> wall_displacement_at_build_;
