@@ -72,9 +72,12 @@ struct ContactForce {
   Vec3 ft = -c.kt * s - c_t * vt;
 
   // Static/kinetic Coulomb friction. Sticking holds while |F_t| <= mu_s |F_n|; beyond it the
-  // contact slides with |F_t| = mu_k |F_n|; it sticks again once the trial force falls back
-  // inside the kinetic cone (the spring unloads). With mu_k > mu_s (the paper's Table 2) the
-  // contact therefore yields at mu_s and then carries mu_k while it keeps sliding.
+  // contact slides, and a sliding contact carries at most mu_k |F_n|: the trial force is cut back
+  // to that cone, never raised to it (raising it would stretch the spring and feed energy in). It
+  // sticks again once the trial force lies inside the kinetic cone (the spring unloads).
+  // With mu_k < mu_s a yielding contact drops from mu_s to mu_k |F_n|. With mu_k > mu_s (the
+  // paper's Table 2) a contact past mu_s |F_n| is marked sliding but keeps its elastic force up
+  // to mu_k |F_n|: it carries at most mu_k |F_n|, and mu_s changes no force.
   bool sliding = h.sliding();
   const double ft2 = norm2(ft);
   if (sliding) {
@@ -82,9 +85,8 @@ struct ContactForce {
   } else if (ft2 > c.mu_s * c.mu_s * fn_abs * fn_abs) {
     sliding = true;
   }
-  if (sliding) {
-    const double ft_len = std::sqrt(ft2);
-    ft = ft_len > 0.0 ? ft * (c.mu_k * fn_abs / ft_len) : Vec3{};
+  if (sliding && ft2 > c.mu_k * c.mu_k * fn_abs * fn_abs) {
+    ft *= c.mu_k * fn_abs / std::sqrt(ft2);
     // The spring keeps what the dashpot does not carry, so that F_t is continuous when it sticks again.
     s = c.kt > 0.0 ? -(ft + c_t * vt) / c.kt : Vec3{};
   }

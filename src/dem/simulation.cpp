@@ -126,15 +126,13 @@ void Simulation::step() {
   check_stability();
 }
 
-// The partner shares start at zero; `pair_active_` mirrors the history's touching flag in one byte,
-// so that the many pairs in the list that do not touch cost no read of their history.
-// The partner shares are stored in the partner's incident order (`partner_slot_` maps a pair to its
-// place there), so that the gather reads each particle's shares contiguously.
-void Simulation::reset_pair_buffers() {
-  pair_force_on_partner_.assign(pairs_.size(), Vec3{});
-  pair_torque_on_partner_.assign(pairs_.size(), Vec3{});
-  partner_slot_.resize(pairs_.size());
-  for (std::size_t q = 0; q < pairs_.incident_pair.size(); ++q) partner_slot_[pairs_.incident_pair[q]] = std::uint32_t(q);
+// Derived from the lists: the activity byte per pair (it mirrors the history's touching flag, so
+// that the many listed pairs that do not touch cost no read of their history) and the particles
+// that have walls within reach.
+void Simulation::derive_list_caches() {
+  particles_near_walls_.clear();
+  for (std::uint32_t i = 0; i + 1 < wall_list_.first.size(); ++i)
+    if (wall_list_.first[i + 1] > wall_list_.first[i]) particles_near_walls_.push_back(i);
   pair_active_.resize(pairs_.size());
   for (std::size_t k = 0; k < pairs_.size(); ++k) pair_active_[k] = pairs_.history[k].flags != 0 ? 1 : 0;
 }
@@ -243,15 +241,19 @@ void Simulation::rebuild_lists() {
   build_wall_candidates(p_, walls_, skin_, wall_list_);
   archive.restore_walls(wall_list_, p_.id);
 
-  reset_pair_buffers();
+  derive_list_caches();
   position_at_build_ = p_.position;
   wall_displacement_at_build_.resize(walls_.size());
   for (std::size_t k = 0; k < walls_.size(); ++k) wall_displacement_at_build_[k] = walls_[k].displacement;
   lists_valid_ = true;
 }
 
-// The pair kernel over the half list: each pair is computed once; the owner (first body) takes its
-// share at once, the partner's share is written per pair and gathered in wall_contacts().
+// The pair kernel over the half list. Particles are in cell order and each thread owns a
+// contiguous block of them; a pair's owner (first body) is in the thread's block and its partner
+// (second body, higher index) usually is too: then both shares are added at once. A partner in a
+// later thread's block receives its share after the loop, from a per-thread list, in thread
+// order. The sums are therefore the same every time for a given thread count; another thread
+// count changes only the order of a few additions (round-off).
 void Simulation::particle_contacts() {
   const std::size_t n = p_.size();
   const ContactConstants c = constants_;
@@ -270,66 +272,82 @@ void Simulation::particle_contacts() {
   const std::uint32_t* partner = pairs_.partner.data();
   ContactHistory* history = pairs_.history.data();
   std::uint8_t* active = pair_active_.data();
-  const std::uint32_t* slot = partner_slot_.data();
-  Vec3* f_partner = pair_force_on_partner_.data();
-  Vec3* t_partner = pair_torque_on_partner_.data();
+  const int threads = omp_get_max_threads();
+  deferred_.resize(std::size_t(threads));
   double max_overlap = 0.0;
-#pragma omp parallel for schedule(static) reduction(max : max_overlap)
-  for (std::size_t i = 0; i < n; ++i) {
-    Vec3 fi{}, ti{};
-    const Vec3 xi = x[i];
-    const double ri = r[i];
-    for (std::uint32_t k = first[i]; k < first[i + 1]; ++k) {
-      const std::uint32_t j = partner[k];
-      Vec3 d = xi - x[j];
-      if (periodic) d = dom.minimum_image(d);
-      const double dist2 = norm2(d);
-      const double rj = r[j];
-      const double reach = ri + rj;
-      if (dist2 >= reach * reach) {
-        // The partner's share was zeroed at the list build and stays zero until a contact
-        // starts: only an ending contact needs clearing.
-        if (active[k]) {
-          active[k] = 0;
-          history[k].reset();
-          f_partner[slot[k]] = Vec3{};
-          t_partner[slot[k]] = Vec3{};
-        }
-        continue;
-      }
-      active[k] = 1;
-      const double dist = std::sqrt(dist2);
-      const Vec3 normal = d * (1.0 / dist);
-      const double overlap = reach - dist;
-      max_overlap = std::max(max_overlap, overlap / std::min(ri, rj));
-      ContactBodies b;
-      b.effective_mass = m[i] * m[j] / (m[i] + m[j]);
-      b.arm_i = ri - 0.5 * overlap;
-      b.arm_j = rj - 0.5 * overlap;
-      b.lever = c.effective_lever_arm ? ri * rj / reach : 0.5 * reach;
-      b.rolling_inertia = b.spin_inertia = 0.0;
-      if (c.needs_rolling_inertia) {
-        const double ii = 1.0 / inv_i[i], ij = 1.0 / inv_i[j];
-        b.rolling_inertia = 1.0 / (1.0 / (ii + m[i] * ri * ri) + 1.0 / (ij + m[j] * rj * rj));
-      }
-      if (c.needs_spin_inertia) b.spin_inertia = 1.0 / (inv_i[i] + inv_i[j]);
-      const ContactForce cf = contact_force(c, b, normal, overlap, v[i] - v[j], w[i], w[j], history[k], dt);
-      const Vec3 n_x_ft = cross(normal, cf.tangential);
-      fi += cf.force;
-      ti += cf.rolling_torque - b.arm_i * n_x_ft;
-      f_partner[slot[k]] = -cf.force;
-      t_partner[slot[k]] = -cf.rolling_torque - b.arm_j * n_x_ft;
+#pragma omp parallel reduction(max : max_overlap)
+  {
+    const int team = omp_get_num_threads(), me = omp_get_thread_num();
+    const std::size_t begin = n * std::size_t(me) / std::size_t(team);
+    const std::size_t end = n * std::size_t(me + 1) / std::size_t(team);
+    std::vector<PartnerShare>& later = deferred_[std::size_t(me)];
+    later.clear();
+    for (std::size_t i = begin; i < end; ++i) {
+      f[i] = Vec3{};
+      t[i] = Vec3{};
     }
-    f[i] = fi;
-    t[i] = ti;
+    for (std::size_t i = begin; i < end; ++i) {
+      Vec3 fi{}, ti{};
+      const Vec3 xi = x[i];
+      const double ri = r[i];
+      for (std::uint32_t k = first[i]; k < first[i + 1]; ++k) {
+        const std::uint32_t j = partner[k];
+        Vec3 d = xi - x[j];
+        if (periodic) d = dom.minimum_image(d);
+        const double dist2 = norm2(d);
+        const double rj = r[j];
+        const double reach = ri + rj;
+        if (dist2 >= reach * reach) {
+          if (active[k]) {
+            active[k] = 0;
+            history[k].reset();
+          }
+          continue;
+        }
+        active[k] = 1;
+        const double dist = std::sqrt(dist2);
+        const Vec3 normal = d * (1.0 / dist);
+        const double overlap = reach - dist;
+        max_overlap = std::max(max_overlap, overlap / std::min(ri, rj));
+        ContactBodies b;
+        b.effective_mass = m[i] * m[j] / (m[i] + m[j]);
+        b.arm_i = ri - 0.5 * overlap;
+        b.arm_j = rj - 0.5 * overlap;
+        b.lever = c.effective_lever_arm ? ri * rj / reach : 0.5 * reach;
+        b.rolling_inertia = b.spin_inertia = 0.0;
+        if (c.needs_rolling_inertia) {
+          const double ii = 1.0 / inv_i[i], ij = 1.0 / inv_i[j];
+          b.rolling_inertia = 1.0 / (1.0 / (ii + m[i] * ri * ri) + 1.0 / (ij + m[j] * rj * rj));
+        }
+        if (c.needs_spin_inertia) b.spin_inertia = 1.0 / (inv_i[i] + inv_i[j]);
+        const ContactForce cf = contact_force(c, b, normal, overlap, v[i] - v[j], w[i], w[j], history[k], dt);
+        const Vec3 n_x_ft = cross(normal, cf.tangential);
+        fi += cf.force;
+        ti += cf.rolling_torque - b.arm_i * n_x_ft;
+        const Vec3 tj = -cf.rolling_torque - b.arm_j * n_x_ft;
+        if (j < end) {
+          f[j] -= cf.force;
+          t[j] += tj;
+        } else {
+          later.push_back({j, -cf.force, tj});
+        }
+      }
+      f[i] += fi;
+      t[i] += ti;
+    }
+  }
+  for (const auto& shares : deferred_) {
+    for (const PartnerShare& s : shares) {
+      f[s.particle] += s.force;
+      t[s.particle] += s.torque;
+    }
   }
   max_overlap_seen_ = max_overlap;
 }
 
-// Completes each particle's force with its partner shares, then adds the walls. Each thread sums
-// the wall loads of its own particles; the threads' sums are added in thread order.
+// The walls, for the particles that have walls within reach. Each thread sums the wall loads of
+// its own particles; the threads' sums are added in thread order.
 void Simulation::wall_contacts() {
-  const std::size_t n = p_.size();
   const std::size_t n_walls = walls_.size();
   const double dt = dt_;
   const Vec3* x = p_.position.data();
@@ -340,15 +358,14 @@ void Simulation::wall_contacts() {
   const double* inv_i = p_.inv_inertia.data();
   Vec3* f = p_.force.data();
   Vec3* t = p_.torque.data();
-  const std::uint32_t* inc_first = pairs_.incident_first.data();
-  const Vec3* f_partner = pair_force_on_partner_.data();
-  const Vec3* t_partner = pair_torque_on_partner_.data();
   const std::uint32_t* wfirst = wall_list_.first.data();
   const std::uint32_t* wall_of = wall_list_.wall.data();
   ContactHistory* whist = wall_list_.history.data();
   Vec3* wforce = wall_list_.force.data();
   const Wall* walls = walls_.data();
   const ContactConstants* wc = wall_constants_.data();
+  const std::uint32_t* near_walls = particles_near_walls_.data();
+  const std::size_t n_near = particles_near_walls_.size();
 
   const int threads = omp_get_max_threads();
   std::vector<Vec3> load(std::size_t(threads) * n_walls * 2, Vec3{});  // force, torque per thread and wall
@@ -357,18 +374,10 @@ void Simulation::wall_contacts() {
   {
     Vec3* my_load = load.data() + std::size_t(omp_get_thread_num()) * n_walls * 2;
 #pragma omp for schedule(static)
-    for (std::size_t i = 0; i < n; ++i) {
-      Vec3 fi = f[i], ti = t[i];
-      for (std::uint32_t q = inc_first[i]; q < inc_first[i + 1]; ++q) {
-        fi += f_partner[q];
-        ti += t_partner[q];
-      }
+    for (std::size_t q = 0; q < n_near; ++q) {
+      const std::uint32_t i = near_walls[q];
+      Vec3 fi{}, ti{};
       const std::uint32_t k0 = wfirst[i], count = wfirst[i + 1] - k0;
-      if (count == 0) {  // most particles are away from every wall
-        f[i] = fi;
-        t[i] = ti;
-        continue;
-      }
       WallProximity near[kMaxWallCandidates];
       bool touching[kMaxWallCandidates];
       std::uint32_t touching_count = 0;
@@ -407,8 +416,8 @@ void Simulation::wall_contacts() {
         my_load[2 * wall_of[k]] -= cf.force;
         my_load[2 * wall_of[k] + 1] -= cross(near[c].point - wall.origin, cf.force);
       }
-      f[i] = fi;
-      t[i] = ti;
+      f[i] += fi;
+      t[i] += ti;
     }
   }
   max_overlap_seen_ = max_overlap;
@@ -526,7 +535,7 @@ void Simulation::restore(double time, const SimulationStats& stats, ListState li
   position_at_build_ = std::move(lists.position_at_build);
   wall_displacement_at_build_ = std::move(lists.wall_displacement_at_build);
   rebuilds_since_reorder_ = lists.rebuilds_since_reorder;
-  reset_pair_buffers();
+  derive_list_caches();
   history_pending_ = false;
   lists_valid_ = true;
   setup_done_ = true;

@@ -98,7 +98,7 @@ class Simulation {
   void integrate_velocities();
   void check_stability() const;
   void invalidate_lists() { lists_valid_ = false; }
-  void reset_pair_buffers();
+  void derive_list_caches();
   std::string describe_particle(std::uint32_t i) const;
 
   Particles p_;
@@ -115,9 +115,12 @@ class Simulation {
   WallList wall_list_;
   HistoryArchive pending_history_;            // archived before particles were removed
   bool history_pending_ = false;
-  std::vector<Vec3> pair_force_on_partner_;   // N, force on the partner (second body), in incident order
-  std::vector<Vec3> pair_torque_on_partner_;  // N m, likewise
-  std::vector<std::uint32_t> partner_slot_;   // pair -> its place in the incident order
+  struct PartnerShare {
+    std::uint32_t particle;
+    Vec3 force, torque;
+  };
+  std::vector<std::vector<PartnerShare>> deferred_;  // per thread: shares for later threads' particles
+  std::vector<std::uint32_t> particles_near_walls_;
   std::vector<std::uint8_t> pair_active_;     // 1 while the pair touches
   std::vector<Vec3> position_at_build_;
   std::vector<Vec3> wall_displacement_at_build_;

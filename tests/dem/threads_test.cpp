@@ -1,8 +1,8 @@
-// Reproducibility across OpenMP thread counts. Every particle's force is summed in a fixed order
-// (its own pairs in list order, then its incident pairs in pair order) whatever the threads, so
-// the particles' trajectories must be bitwise identical with 1 and 2 threads. Only the walls'
-// loads are summed per thread (then in thread order), so they agree to round-off across thread
-// counts and bitwise for a given count.
+// Reproducibility across OpenMP thread counts. Each thread owns a block of particles and adds
+// the partner shares of pairs reaching into a later block after the loop (simulation.cpp), so
+// another thread count changes the order of a few additions: trajectories agree to round-off
+// across thread counts, and are bitwise identical for a given count. Wall loads are summed per
+// thread, then in thread order: likewise.
 #include <gtest/gtest.h>
 #include <omp.h>
 
@@ -79,17 +79,26 @@ void expect_bitwise_equal_particles(const Snapshot& a, const Snapshot& b, const 
 
 }  // namespace
 
-TEST(Threads, OneAndTwoThreadsGiveBitwiseIdenticalParticles) {
+// Round-off (1e-16 relative) in the order of additions grows through the collisions of a
+// settling bed, but over these 1500 steps it stays far below any physical scale: positions must
+// agree within 1e-9 of a radius (1e-12 m) and wall loads within 1e-9 of the floor load. A real
+// thread-safety fault (a lost or doubled force) moves particles by many orders more.
+TEST(Threads, OneAndTwoThreadsAgreeToRoundOff) {
   const Snapshot one = settle(1);
   const Snapshot two = settle(2);
-  expect_bitwise_equal_particles(one, two, "1 vs 2 threads");
-  // Wall loads: per-thread partial sums, so round-off only (1e-12 of the floor load).
+  ASSERT_EQ(one.id, two.id) << "particle order differs";
+  EXPECT_EQ(one.rebuilds, two.rebuilds);
+  double worst_position = 0.0;
+  for (std::size_t i = 0; i < one.id.size(); ++i)
+    worst_position = std::max(worst_position, norm(one.position[i] - two.position[i]));
+  report("threads: largest position difference 1 vs 2 threads {:.1e} m (tol 1e-12 m)", worst_position);
+  EXPECT_LT(worst_position, 1e-12);
   const double scale = norm(one.wall_force[0]);
   ASSERT_GT(scale, 0.0);
   double worst = 0.0;
   for (std::size_t k = 0; k < one.wall_force.size(); ++k) worst = std::max(worst, norm(one.wall_force[k] - two.wall_force[k]));
-  report("threads: wall load difference 1 vs 2 threads {:.1e} of the floor load (tol 1e-12)", worst / scale);
-  EXPECT_LT(worst, 1e-12 * scale);
+  report("threads: wall load difference 1 vs 2 threads {:.1e} of the floor load (tol 1e-9)", worst / scale);
+  EXPECT_LT(worst, 1e-9 * scale);
 }
 
 TEST(Threads, SameThreadCountIsBitwiseRepeatable) {
