@@ -44,7 +44,11 @@ SizeDistribution read_sizes(Config& p) {
   }
   std::vector<std::pair<double, double>> table;
   for (const auto& row : p.require_rows("grading", 2, "diameter in m, percent passing")) table.emplace_back(row[0], row[1]);
-  return SizeDistribution::grading(std::move(table), p.source_name() + ": particles.grading");
+  try {
+    return SizeDistribution::grading(std::move(table), "grading");
+  } catch (const InputError& e) {
+    throw p.error("grading", e.what());  // names the file and line of the table
+  }
 }
 
 }  // namespace
@@ -77,8 +81,10 @@ ExperimentConfig ExperimentConfig::from(Config& c) {
   Config particles = c.get_table("particles");
   e.material.density = particles.get_double("density", e.material.density, "kg/m^3", Range::positive());
   e.material.sizes = read_sizes(particles);
-  if (e.material.sizes.max_diameter() * 3.0 > e.box.depth && !e.box.periodic_depth)
-    throw particles.error("diameter", fmt::format("particles at most a third of the box depth ({} m)", e.box.depth));
+  if (e.material.sizes.max_diameter() * 3.0 > e.box.depth && !e.box.periodic_depth) {
+    const char* size_key = particles.has("grading") ? "grading" : (particles.has("max_diameter") ? "max_diameter" : "diameter");
+    throw particles.error(size_key, fmt::format("particles at most a third of the box depth ({} m)", e.box.depth));
+  }
 
   e.material.particle = read_contact_law(c.get_table("contact"), ContactLaw{});
   Config walls = c.get_table("walls");
@@ -98,11 +104,24 @@ ExperimentConfig ExperimentConfig::from(Config& c) {
   e.pluviation.packing_fraction =
       pour.get_double("packing_fraction", e.pluviation.packing_fraction, "", Range::open_closed(0.0, 0.75));
   e.pluviation.seed = static_cast<std::uint64_t>(pour.get_int("seed", 1, Range::non_negative()));
+  if (e.pluviation.count > 0) {
+    // The deposit's height at the assumed solid fraction must fit in the box.
+    const double d = e.material.sizes.mean_diameter();
+    const double height = double(e.pluviation.count) * std::numbers::pi / 6.0 * d * d * d /
+                          (e.pluviation.packing_fraction * e.box.width * e.box.depth);
+    if (height > e.box.height)
+      throw pour.error("count", fmt::format("a count whose deposit fits the box: {} particles at a solid fraction of "
+                                            "{} stand {:.1f} mm high, the box is {:.1f} mm",
+                                            e.pluviation.count, e.pluviation.packing_fraction, height * 1e3,
+                                            e.box.height * 1e3));
+  }
 
   Config settle = c.get_table("settling");
   e.settling.energy_ratio = settle.get_double("energy_ratio", e.settling.energy_ratio, "", Range::positive());
   e.settling.min_time = settle.get_double("min_time", e.settling.min_time, "s", Range::non_negative());
   e.settling.max_time = settle.get_double("max_time", e.settling.max_time, "s", Range::positive());
+  if (e.settling.min_time > e.settling.max_time)
+    throw settle.error("min_time", fmt::format("at most max_time ({} s)", e.settling.max_time));
 
   Config spin = c.get_table("spin_up");
   e.spin_up.g_level = spin.get_double("g_level", e.spin_up.g_level, "g", Range::at_least(1.0));

@@ -169,24 +169,21 @@ const std::vector<BadConfig>& cases() {
        "grading = [[0.001, 0.0], [0.003, 50.0], [0.002, 100.0]]\n"
        "[pluviation]\n"
        "count = 100\n",
-       3, "particles.grading", "sizes must increase",
-       "SizeDistribution::grading builds its message from source_name(), without the line"},
+       3, "particles.grading", "sizes must increase"},
       {"GradingPercentDecreasing",
        "[particles]\n"
        "size = \"grading\"\n"
        "grading = [[0.001, 0.0], [0.002, 60.0], [0.003, 40.0], [0.004, 100.0]]\n"
        "[pluviation]\n"
        "count = 100\n",
-       3, "particles.grading", "percent passing must not decrease",
-       "SizeDistribution::grading builds its message from source_name(), without the line"},
+       3, "particles.grading", "percent passing must not decrease"},
       {"GradingNotEndingAt100",
        "[particles]\n"
        "size = \"grading\"\n"
        "grading = [[0.001, 0.0], [0.002, 90.0]]\n"
        "[pluviation]\n"
        "count = 100\n",
-       3, "particles.grading", "end at 100 % passing",
-       "SizeDistribution::grading builds its message from source_name(), without the line"},
+       3, "particles.grading", "end at 100 % passing"},
       {"GradingRowOfThree",
        "[particles]\n"
        "size = \"grading\"\n"
