@@ -4,6 +4,7 @@
 #include <CLI/CLI.hpp>
 #include <fmt/format.h>
 
+#include "analyze_command.hpp"
 #include "dem/errors.hpp"
 #include "io/file_error.hpp"
 #include "run_command.hpp"
@@ -35,11 +36,40 @@ int main(int argc, char** argv) {
   sc->add_option("--particles", showcase.particles, "Number of spheres")->check(CLI::PositiveNumber);
   sc->add_option("--threads", showcase.threads, "OpenMP threads (default: all cores)")->check(CLI::NonNegativeNumber);
 
+  trapdem::app::AnalyzeOptions analyze;
+  auto* an = app.add_subcommand("analyze", "Strain fields, shear bands and zone of influence of a run; writes DIR/analysis/");
+  an->add_option("dir", analyze.dir, "Run folder (snapshots.h5, resolved.toml, trapdoor.csv)")->required();
+  an->add_option("--at", analyze.at, "Trapdoor displacement to analyse, e.g. 80mm (default: the last snapshot)");
+  an->add_option("--reference", analyze.reference, "Reference trapdoor displacement (default 0mm)");
+  an->add_option("--view", analyze.view, "front: particles near the glass; all: every particle")
+      ->check(CLI::IsMember({"front", "all"}));
+  an->add_option("--front-depth", analyze.front_depth, "Front view depth from the glass (default 1.5 max diameters)");
+  an->add_flag("--incremental", analyze.incremental, "Also accumulate incremental strain over the snapshots between");
+  an->add_option("--grid", analyze.grid, "Grid spacing of the vertical displacement, e.g. 2mm (default d/2)");
+  an->add_option("--dumps", analyze.dumps, "LAMMPS/LIGGGHTS text dumps (id x y z radius) instead of snapshots.h5");
+  an->add_option("--displacements", analyze.displacements, "Trapdoor displacement of each dump: 0mm,10mm,...");
+  an->add_option("--config", analyze.config, "Geometry (TOML with [box], [trapdoor]; default DIR/resolved.toml)");
+  an->add_option("--out", analyze.out, "Output folder (default DIR/analysis)");
+  an->add_flag("--no-figures", analyze.no_figures, "Fields and metrics only");
+  an->add_flag("--quiet", analyze.quiet, "No metrics table on the terminal");
+
+  trapdem::app::FigureOptions figure;
+  auto* fig = app.add_subcommand("figure", "Panel of several runs' shear strain maps with one colour scale");
+  fig->add_option("dirs", figure.dirs, "Run folders")->required();
+  fig->add_option("--out", figure.out, "PNG file (default panel.png)");
+  fig->add_option("--at", figure.at, "Trapdoor displacement, e.g. 80mm (default: each run's last snapshot)");
+  fig->add_option("--reference", figure.reference, "Reference trapdoor displacement (default 0mm)");
+  fig->add_option("--view", figure.view, "front or all")->check(CLI::IsMember({"front", "all"}));
+  fig->add_option("--front-depth", figure.front_depth, "Front view depth from the glass");
+  fig->add_option("--max-strain", figure.max_strain, "Top of the gamma_max colour scale (default: automatic)");
+
   CLI11_PARSE(app, argc, argv);
   try {
     if (run_cmd->parsed()) return trapdem::app::run_experiment(run);
     if (presets_cmd->parsed()) return trapdem::app::list_presets();
     if (sc->parsed()) return trapdem::app::run_showcase(showcase);
+    if (an->parsed()) return trapdem::app::run_analyze(analyze);
+    if (fig->parsed()) return trapdem::app::run_figure(figure);
   } catch (const trapdem::InputError& e) {
     fmt::print(stderr, "trapdem: input error: {}\n", e.what());
     return 2;

@@ -1,0 +1,284 @@
+#include "analysis/analysis_output.hpp"
+
+#include <cmath>
+#include <fmt/format.h>
+
+#include "analysis/length_text.hpp"
+#include "io/atomic_file.hpp"
+#include "io/hdf5_file.hpp"
+
+namespace trapdem {
+
+namespace fs = std::filesystem;
+
+namespace {
+
+Json band_json(const ShearBand& band, const AnalysisResult& r) {
+  Json b = Json::object();
+  b.set("angle_deg", band.angle_deg);
+  b.set("base_angle_deg", band.base_angle_deg);
+  b.set("height_reached_m", band.height_reached);
+  b.set("height_reached_over_B", band.height_reached / r.geometry.trapdoor.width);
+  b.set("width_diameters", band.width_diameters);
+  b.set("trace_points", band.trace.size());
+  Json z = Json::array(), x = Json::array(), peak = Json::array(), width = Json::array();
+  for (const auto& p : band.trace) {
+    z.push_back(p.z);
+    x.push_back(p.x);
+    peak.push_back(p.peak);
+    width.push_back(p.horizontal_width);
+  }
+  Json trace = Json::object();
+  trace.set("z_m", z);
+  trace.set("x_m", x);
+  trace.set("peak_gamma_max", peak);
+  trace.set("horizontal_width_m", width);
+  b.set("trace", trace);
+  return b;
+}
+
+std::vector<double> component(const std::vector<PlaneStrain>& strains, double PlaneStrain::*member) {
+  std::vector<double> out;
+  out.reserve(strains.size());
+  for (const auto& e : strains) out.push_back(e.*member);
+  return out;
+}
+
+}  // namespace
+
+Json metrics_json(const AnalysisResult& r) {
+  const double B = r.geometry.trapdoor.width;
+  Json j = Json::object();
+  j.set("case", r.geometry.name);
+  Json inputs = Json::object();
+  inputs.set("at_m", r.at_displacement);
+  inputs.set("reference_m", r.reference_displacement);
+  inputs.set("at_requested_m", r.settings.at);
+  inputs.set("reference_requested_m", r.settings.reference);
+  inputs.set("at_snapshot", r.at_label);
+  inputs.set("reference_snapshot", r.reference_label);
+  inputs.set("view", view_name(r.settings.view));
+  inputs.set("front_depth_m", r.settings.view == ViewKind::front ? Json(r.settings.front_depth) : Json());
+  inputs.set("incremental", r.has_incremental);
+  inputs.set("increments", r.has_incremental ? Json(r.accumulated.increments) : Json());
+  inputs.set("grid_spacing_m", r.settings.grid_spacing);
+  inputs.set("strain_for_metrics", "total");
+  j.set("inputs", inputs);
+
+  Json trapdoor = Json::object();
+  trapdoor.set("centre_x_m", r.geometry.trapdoor.centre_x);
+  trapdoor.set("width_m", B);
+  trapdoor.set("travel_m", r.trapdoor_travel());
+  trapdoor.set("travel_over_B", r.trapdoor_travel() / B);
+  j.set("trapdoor", trapdoor);
+
+  Json particles = Json::object();
+  particles.set("matched", r.matched_particles);
+  particles.set("viewed", r.id.size());
+  particles.set("mean_diameter_m", r.mean_diameter);
+  particles.set("max_diameter_m", r.max_diameter);
+  j.set("particles", particles);
+
+  Json triangles = Json::object();
+  triangles.set("delaunay", r.delaunay_triangles);
+  triangles.set("kept", r.mesh.mesh.size());
+  triangles.set("dropped_long_edge", r.mesh.dropped_long_edge);
+  triangles.set("dropped_sliver", r.mesh.dropped_sliver);
+  triangles.set("max_edge_in_diameters", r.settings.filter.max_edge_in_diameters);
+  triangles.set("min_angle_deg", r.settings.filter.min_angle_deg);
+  j.set("triangles", triangles);
+
+  Json strain = Json::object();
+  strain.set("sign_convention", "compression positive; gamma_max engineering shear");
+  strain.set("gamma_max_median", quantile(r.gamma_max, 0.5));
+  strain.set("gamma_max_p95", quantile(r.gamma_max, 0.95));
+  strain.set("gamma_max_max", quantile(r.gamma_max, 1.0));
+  strain.set("volumetric_median", quantile(r.volumetric, 0.5));
+  if (r.has_incremental) {
+    strain.set("gamma_max_incremental_p95", quantile(r.gamma_max_incremental, 0.95));
+    strain.set("gamma_max_incremental_max", quantile(r.gamma_max_incremental, 1.0));
+  }
+  j.set("strain", strain);
+
+  Json bands = Json::object();
+  bands.set("angle_convention", "degrees to the vertical, positive leaning outward (zone widening upward)");
+  bands.set("ridge_threshold", r.settings.bands.ridge_threshold);
+  bands.set("left", band_json(r.bands.left, r));
+  bands.set("right", band_json(r.bands.right, r));
+  j.set("shear_bands", bands);
+
+  Json zone = Json::object();
+  zone.set("settlement_fraction", r.settings.zone.settlement_fraction);
+  zone.set("threshold_m", r.zone.threshold);
+  zone.set("surface_height_m", r.zone.surface_height);
+  zone.set("surface_width_m", r.zone.surface_width);
+  zone.set("surface_width_over_B", r.zone.surface_width / B);
+  Json widths = Json::array();
+  for (const auto& w : r.zone.widths) {
+    Json e = Json::object();
+    e.set("height_m", w.height);
+    e.set("width_m", w.width);
+    e.set("width_over_B", w.width / B);
+    widths.push_back(e);
+  }
+  zone.set("widths", widths);
+  zone.set("mid_height_width_m", r.zone.mid_height_width);
+  zone.set("shape_ratio", r.zone.shape_ratio);
+  zone.set("shape", !std::isfinite(r.zone.shape_ratio) ? "unknown"
+                    : r.zone.shape_ratio < 1.3                 ? "columnar"
+                                                               : "elliptical");
+  j.set("zone_of_influence", zone);
+  return j;
+}
+
+void write_metrics(const fs::path& dir, const AnalysisResult& result) {
+  fs::create_directories(dir);
+  write_text_atomically(dir / "metrics.json", metrics_json(result).dump());
+}
+
+void write_fields(const fs::path& dir, const AnalysisResult& r) {
+  fs::create_directories(dir);
+  const fs::path h5 = dir / "fields.h5";
+  write_atomically(h5, [&](const fs::path& temporary) {
+    Hdf5File file = Hdf5File::create_in_memory(h5);
+    file.set_string_attribute("format", "trapdem-analysis-fields");
+    file.set_int_attribute("version", 1);
+    file.set_string_attribute("case", r.geometry.name);
+    file.set_string_attribute("reference_snapshot", r.reference_label);
+    file.set_string_attribute("at_snapshot", r.at_label);
+    file.set_double_attribute("reference_displacement", r.reference_displacement);
+    file.set_double_attribute("at_displacement", r.at_displacement);
+    file.set_string_attribute("view", view_name(r.settings.view));
+    file.set_double_attribute("front_depth", r.settings.front_depth);
+    file.set_double_attribute("mean_diameter", r.mean_diameter);
+    file.set_string_attribute("sign_convention", "strain compression positive; gamma engineering shear");
+
+    const std::size_t n = r.id.size();
+    std::vector<Vec3> position(n), displacement(n);
+    for (std::size_t k = 0; k < n; ++k) {
+      position[k] = {r.points.position[k].x, r.geometry.box_depth, r.points.position[k].z};
+      displacement[k] = {r.points.displacement[k].x, 0.0, r.points.displacement[k].z};
+    }
+    const Hdf5Group nodes = file.create_group("nodes");
+    nodes.write_int64s("id", r.id);
+    nodes.write_vec3s("position", position, "m");
+    nodes.write_vec3s("displacement", displacement, "m");
+    nodes.write_doubles("vertical_displacement", vertical_displacements(r.points), "m");
+    nodes.write_doubles("radius", r.radius, "m");
+
+    const Hdf5Group tri = file.create_group("triangles");
+    std::vector<Int3> connectivity;
+    connectivity.reserve(r.mesh.mesh.size());
+    for (const auto& t : r.mesh.mesh.triangles) {
+      connectivity.push_back({static_cast<std::int32_t>(t[0]), static_cast<std::int32_t>(t[1]),
+                              static_cast<std::int32_t>(t[2])});
+    }
+    tri.write_int3s("connectivity", connectivity);
+    tri.write_doubles("gamma_max", r.gamma_max);
+    tri.write_doubles("volumetric_strain", r.volumetric);
+    tri.write_doubles("exx", component(r.strain, &PlaneStrain::exx));
+    tri.write_doubles("ezz", component(r.strain, &PlaneStrain::ezz));
+    tri.write_doubles("gamma_xz", component(r.strain, &PlaneStrain::gamma_xz));
+    if (r.has_incremental) {
+      tri.write_doubles("gamma_max_incremental", r.gamma_max_incremental);
+      tri.write_doubles("volumetric_strain_incremental", r.volumetric_incremental);
+      tri.write_doubles("exx_incremental", component(r.accumulated.strain, &PlaneStrain::exx));
+      tri.write_doubles("ezz_incremental", component(r.accumulated.strain, &PlaneStrain::ezz));
+      tri.write_doubles("gamma_xz_incremental", component(r.accumulated.strain, &PlaneStrain::gamma_xz));
+    }
+
+    const Hdf5Group grid = file.create_group("grid");
+    const GridSpec& g = r.vertical_displacement.grid;
+    grid.set_double_attribute("x0", g.x0);
+    grid.set_double_attribute("z0", g.z0);
+    grid.set_double_attribute("spacing", g.spacing);
+    grid.set_int_attribute("nx", static_cast<std::int64_t>(g.nx));
+    grid.set_int_attribute("nz", static_cast<std::int64_t>(g.nz));
+    grid.write_doubles("vertical_displacement", r.vertical_displacement.value, "m");
+
+    const Hdf5Group bands = file.create_group("bands");
+    for (const ShearBand* band : {&r.bands.left, &r.bands.right}) {
+      const Hdf5Group b = bands.create_group(band->side == BandSide::left ? "left" : "right");
+      std::vector<double> z, x, peak, width;
+      for (const auto& p : band->trace) {
+        z.push_back(p.z);
+        x.push_back(p.x);
+        peak.push_back(p.peak);
+        width.push_back(p.horizontal_width);
+      }
+      b.write_doubles("z", z, "m");
+      b.write_doubles("x", x, "m");
+      b.write_doubles("peak_gamma_max", peak);
+      b.write_doubles("horizontal_width", width, "m");
+      b.set_double_attribute("angle_deg", band->angle_deg);
+      b.set_double_attribute("base_angle_deg", band->base_angle_deg);
+      b.set_double_attribute("height_reached", band->height_reached);
+      b.set_double_attribute("width_diameters", band->width_diameters);
+    }
+    file.write_image(temporary);
+  });
+  write_text_atomically(dir / "fields.xmf", fields_xdmf(r, "fields.h5"));
+}
+
+std::string fields_xdmf(const AnalysisResult& r, const std::string& h5) {
+  const std::size_t n = r.id.size(), m = r.mesh.mesh.size();
+  std::string s;
+  s += "<?xml version=\"1.0\" ?>\n";
+  s += "<!-- trapdem analysis: constant strain triangles on the reference particle centres; data in " + h5 +
+       " (see docs/analysis.md). Strain compression positive. -->\n";
+  s += "<Xdmf Version=\"3.0\">\n  <Domain>\n";
+  s += fmt::format("    <Grid Name=\"{} {} to {}\" GridType=\"Uniform\">\n", r.geometry.name,
+                   format_mm(r.reference_displacement), format_mm(r.at_displacement));
+  s += fmt::format("      <Topology TopologyType=\"Triangle\" NumberOfElements=\"{}\">\n", m);
+  s += fmt::format("        <DataItem Dimensions=\"{} 3\" NumberType=\"Int\" Precision=\"4\" Format=\"HDF\">{}:/triangles/connectivity</DataItem>\n", m, h5);
+  s += "      </Topology>\n";
+  s += "      <Geometry GeometryType=\"XYZ\">\n";
+  s += fmt::format("        <DataItem Dimensions=\"{} 3\" NumberType=\"Float\" Precision=\"8\" Format=\"HDF\">{}:/nodes/position</DataItem>\n", n, h5);
+  s += "      </Geometry>\n";
+  auto cell = [&](const std::string& name) {
+    s += fmt::format("      <Attribute Name=\"{}\" AttributeType=\"Scalar\" Center=\"Cell\">\n", name);
+    s += fmt::format("        <DataItem Dimensions=\"{}\" NumberType=\"Float\" Precision=\"8\" Format=\"HDF\">{}:/triangles/{}</DataItem>\n", m, h5, name);
+    s += "      </Attribute>\n";
+  };
+  for (const char* name : {"gamma_max", "volumetric_strain", "exx", "ezz", "gamma_xz"}) cell(name);
+  if (r.has_incremental) {
+    for (const char* name : {"gamma_max_incremental", "volumetric_strain_incremental"}) cell(name);
+  }
+  s += "      <Attribute Name=\"displacement\" AttributeType=\"Vector\" Center=\"Node\">\n";
+  s += fmt::format("        <DataItem Dimensions=\"{} 3\" NumberType=\"Float\" Precision=\"8\" Format=\"HDF\">{}:/nodes/displacement</DataItem>\n", n, h5);
+  s += "      </Attribute>\n";
+  s += "      <Attribute Name=\"vertical_displacement\" AttributeType=\"Scalar\" Center=\"Node\">\n";
+  s += fmt::format("        <DataItem Dimensions=\"{}\" NumberType=\"Float\" Precision=\"8\" Format=\"HDF\">{}:/nodes/vertical_displacement</DataItem>\n", n, h5);
+  s += "      </Attribute>\n";
+  s += "    </Grid>\n  </Domain>\n</Xdmf>\n";
+  return s;
+}
+
+std::string metrics_table(const AnalysisResult& r) {
+  const double B = r.geometry.trapdoor.width, d = r.mean_diameter;
+  auto num = [](double v, const char* f) { return std::isfinite(v) ? fmt::format(fmt::runtime(f), v) : std::string("-"); };
+  std::string s;
+  s += fmt::format("analysis of '{}': trapdoor {} -> {} (travel {} = {:.3f} B), {} view, {} particles, d = {}\n",
+                   r.geometry.name, format_mm(r.reference_displacement), format_mm(r.at_displacement),
+                   format_mm(r.trapdoor_travel()), r.trapdoor_travel() / B, view_name(r.settings.view), r.id.size(),
+                   format_mm(d));
+  s += fmt::format("  triangles: {} kept of {} (dropped {} long-edge, {} sliver)\n", r.mesh.mesh.size(),
+                   r.delaunay_triangles, r.mesh.dropped_long_edge, r.mesh.dropped_sliver);
+  s += "  shear band   angle(deg)  base angle(deg)  height(mm)  height/B  width(d)\n";
+  for (const ShearBand* b : {&r.bands.left, &r.bands.right}) {
+    s += fmt::format("  {:<10} {:>11} {:>16} {:>11} {:>9} {:>9}\n", b->side == BandSide::left ? "left" : "right",
+                     num(b->angle_deg, "{:.1f}"), num(b->base_angle_deg, "{:.1f}"),
+                     num(b->height_reached * 1e3, "{:.1f}"), num(b->height_reached / B, "{:.2f}"),
+                     num(b->width_diameters, "{:.1f}"));
+  }
+  s += fmt::format("  zone of influence (settlement >= {:.0f}% of travel): surface {} mm ({} B)", 
+                   100.0 * r.settings.zone.settlement_fraction, num(r.zone.surface_width * 1e3, "{:.1f}"),
+                   num(r.zone.surface_width / B, "{:.2f}"));
+  for (const auto& w : r.zone.widths) {
+    s += fmt::format(", at {} mm {} mm", num(w.height * 1e3, "{:.0f}"), num(w.width * 1e3, "{:.1f}"));
+  }
+  s += fmt::format("; shape ratio {} (mid-height width / B)\n", num(r.zone.shape_ratio, "{:.2f}"));
+  return s;
+}
+
+}  // namespace trapdem

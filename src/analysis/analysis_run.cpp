@@ -1,0 +1,207 @@
+#include "analysis/analysis_run.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <fmt/format.h>
+#include <unordered_map>
+
+#include "analysis/delaunay.hpp"
+#include "analysis/dump_reader.hpp"
+#include "analysis/grid_interpolation.hpp"
+#include "analysis/horizontal_profile.hpp"
+#include "analysis/length_text.hpp"
+#include "analysis/total_strain.hpp"
+#include "dem/errors.hpp"
+
+namespace trapdem {
+
+const char* view_name(ViewKind view) { return view == ViewKind::front ? "front" : "all"; }
+
+namespace {
+
+std::string list_displacements(const std::vector<double>& displacements) {
+  std::string s;
+  for (std::size_t k = 0; k < displacements.size(); ++k) {
+    if (k) s += ", ";
+    s += format_mm(displacements[k]);
+  }
+  return s;
+}
+
+std::size_t find_latest(const std::vector<double>& displacements, double target, double tolerance,
+                        const char* option) {
+  const double tol = std::max(tolerance, 0.02 * std::abs(target));
+  for (std::size_t k = displacements.size(); k-- > 0;) {
+    if (std::abs(displacements[k] - target) <= tol) return k;
+  }
+  throw InputError(fmt::format("{} {}: no snapshot at that trapdoor displacement (within {}); the snapshots are at {}",
+                               option, format_mm(target), format_mm(tol), list_displacements(displacements)));
+}
+
+}  // namespace
+
+FrameChoice choose_frames(const std::vector<double>& displacements, const AnalysisSettings& settings) {
+  if (displacements.size() < 2) {
+    throw InputError(fmt::format("the analysis needs at least two snapshots (a reference and a later one); found {}",
+                                 displacements.size()));
+  }
+  FrameChoice choice;
+  choice.reference = find_latest(displacements, settings.reference, settings.match_tolerance, "--reference");
+  choice.at = std::isnan(settings.at) ? displacements.size() - 1
+                                      : find_latest(displacements, settings.at, settings.match_tolerance, "--at");
+  if (choice.at <= choice.reference) {
+    throw InputError(fmt::format("--at {} must be a snapshot after the reference ({}); the snapshots are at {}",
+                                 format_mm(displacements[choice.at]), format_mm(displacements[choice.reference]),
+                                 list_displacements(displacements)));
+  }
+  if (settings.incremental) {
+    for (std::size_t k = choice.reference + 1; k < choice.at; ++k) choice.between.push_back(k);
+  }
+  return choice;
+}
+
+double quantile(std::vector<double> values, double q) {
+  std::erase_if(values, [](double v) { return !std::isfinite(v); });
+  if (values.empty()) return std::numeric_limits<double>::quiet_NaN();
+  std::sort(values.begin(), values.end());
+  const double s = std::clamp(q, 0.0, 1.0) * static_cast<double>(values.size() - 1);
+  const std::size_t i = static_cast<std::size_t>(s);
+  if (i + 1 >= values.size()) return values.back();
+  return values[i] + (s - static_cast<double>(i)) * (values[i + 1] - values[i]);
+}
+
+AnalysisResult analyze_frames(const std::vector<AnalysisFrame>& frames, const SpecimenGeometry& geometry,
+                              AnalysisSettings settings) {
+  if (frames.size() < 2) throw InputError("the analysis needs a reference and a current snapshot");
+  if (!(geometry.trapdoor.width > 0.0)) throw InputError("the trapdoor width must be positive");
+  AnalysisResult r;
+  r.geometry = geometry;
+  const Snapshot& ref = frames.front().snapshot;
+  r.reference_label = frames.front().label;
+  r.at_label = frames.back().label;
+  r.reference_displacement = frames.front().trapdoor_displacement;
+  r.at_displacement = frames.back().trapdoor_displacement;
+  if (!(r.trapdoor_travel() > 0.0)) {
+    throw InputError(fmt::format("the trapdoor moved {} between the reference ({}) and the current snapshot ({}): "
+                                 "nothing to analyse",
+                                 format_mm(r.trapdoor_travel()), r.reference_label, r.at_label));
+  }
+
+  // Index of every id in each frame; keep ids present in all.
+  std::vector<std::unordered_map<std::int64_t, std::size_t>> index(frames.size());
+  for (std::size_t f = 0; f < frames.size(); ++f) {
+    const Snapshot& s = frames[f].snapshot;
+    index[f].reserve(s.size());
+    for (std::size_t k = 0; k < s.size(); ++k) index[f].emplace(s.id[k], k);
+  }
+  std::vector<std::size_t> matched;  // indices into the reference
+  for (std::size_t k = 0; k < ref.size(); ++k) {
+    bool everywhere = true;
+    for (std::size_t f = 1; f < frames.size() && everywhere; ++f) everywhere = index[f].count(ref.id[k]) > 0;
+    if (everywhere) matched.push_back(k);
+  }
+  r.matched_particles = matched.size();
+  if (matched.size() < 3) {
+    throw InputError(fmt::format("only {} particles appear in both {} and {} (matched by id)", matched.size(),
+                                 r.reference_label, r.at_label));
+  }
+  for (std::size_t k : matched) r.max_diameter = std::max(r.max_diameter, 2.0 * ref.radius[k]);
+
+  // The plane-strain view, chosen in the reference configuration.
+  if (settings.front_depth <= 0.0) settings.front_depth = 1.5 * r.max_diameter;
+  std::vector<std::size_t> viewed;
+  for (std::size_t k : matched) {
+    if (settings.view == ViewKind::all || geometry.box_depth - ref.position[k].y <= settings.front_depth) {
+      viewed.push_back(k);
+    }
+  }
+  if (viewed.size() < 3) {
+    throw InputError(fmt::format("the {} view holds {} particles (front depth {}, box depth {})",
+                                 view_name(settings.view), viewed.size(), format_mm(settings.front_depth),
+                                 format_mm(geometry.box_depth)));
+  }
+  double diameter_sum = 0.0;
+  std::vector<std::vector<Point2>> configurations(frames.size());
+  for (std::size_t k : viewed) {
+    r.id.push_back(ref.id[k]);
+    r.radius.push_back(ref.radius[k]);
+    diameter_sum += 2.0 * ref.radius[k];
+    for (std::size_t f = 0; f < frames.size(); ++f) {
+      const std::size_t j = f == 0 ? k : index[f].at(ref.id[k]);
+      const Vec3& p = frames[f].snapshot.position[j];
+      configurations[f].push_back({p.x, p.z});
+    }
+  }
+  r.mean_diameter = diameter_sum / static_cast<double>(viewed.size());
+  r.points = point_set_between(configurations.front(), configurations.back());
+
+  // Mesh and strain.
+  settings.filter.mean_diameter = r.mean_diameter;
+  const TriangleMesh delaunay = delaunay_triangulation(r.points.position);
+  r.delaunay_triangles = delaunay.size();
+  r.mesh = filter_triangles(delaunay, r.points.position, settings.filter);
+  if (r.mesh.mesh.size() == 0) throw InputError("no triangle is left after filtering: too few particles in the view");
+  r.strain = total_strains(r.mesh.mesh, r.points);
+  r.gamma_max = maximum_shear_strains(r.strain);
+  r.volumetric = volumetric_strains(r.strain);
+  if (settings.incremental) {
+    r.has_incremental = true;
+    r.accumulated = accumulated_incremental_strain(r.mesh.mesh, configurations);
+    r.gamma_max_incremental = r.accumulated.max_shear;
+    r.volumetric_incremental = volumetric_strains(r.accumulated.strain);
+  }
+
+  // Grid of vertical displacement.
+  if (settings.grid_spacing <= 0.0) settings.grid_spacing = 0.5 * r.mean_diameter;
+  r.vertical_displacement = interpolate_nodal_field(r.mesh.mesh, r.points.position, vertical_displacements(r.points),
+                                                    grid_covering(r.points.position, settings.grid_spacing));
+
+  // Metrics.
+  settings.bands.mean_diameter = r.mean_diameter;
+  r.bands = trace_shear_bands(make_triangle_field(r.mesh.mesh, r.points.position, r.gamma_max), geometry.trapdoor,
+                              settings.bands);
+  settings.zone.mean_diameter = r.mean_diameter;
+  settings.zone.trapdoor_displacement = r.trapdoor_travel();
+  r.zone = zone_of_influence(r.points, geometry.trapdoor, settings.zone);
+  r.settings = settings;
+  return r;
+}
+
+AnalysisResult analyze_snapshot_file(const std::filesystem::path& h5_path, const SpecimenGeometry& geometry,
+                                     const AnalysisSettings& settings) {
+  const auto infos = list_snapshots(h5_path);
+  std::vector<double> displacements;
+  for (const auto& info : infos) displacements.push_back(info.trapdoor_displacement);
+  const FrameChoice choice = choose_frames(displacements, settings);
+  std::vector<std::size_t> order{choice.reference};
+  order.insert(order.end(), choice.between.begin(), choice.between.end());
+  order.push_back(choice.at);
+  std::vector<AnalysisFrame> frames;
+  for (std::size_t k : order) {
+    frames.push_back({infos[k].name, infos[k].trapdoor_displacement, read_snapshot(h5_path, infos[k].name)});
+  }
+  return analyze_frames(frames, geometry, settings);
+}
+
+AnalysisResult analyze_dump_files(const std::vector<std::filesystem::path>& dumps,
+                                  const std::vector<double>& displacements, const SpecimenGeometry& geometry,
+                                  const AnalysisSettings& settings) {
+  if (dumps.size() != displacements.size()) {
+    throw InputError(fmt::format("{} dump files but {} displacements: give one trapdoor displacement per dump "
+                                 "(--displacements 0mm,10mm,...)",
+                                 dumps.size(), displacements.size()));
+  }
+  const FrameChoice choice = choose_frames(displacements, settings);
+  std::vector<std::size_t> order{choice.reference};
+  order.insert(order.end(), choice.between.begin(), choice.between.end());
+  order.push_back(choice.at);
+  std::vector<AnalysisFrame> frames;
+  for (std::size_t k : order) {
+    Snapshot s = read_dump_file(dumps[k]);
+    s.trapdoor_displacement = displacements[k];
+    frames.push_back({dumps[k].filename().string(), displacements[k], std::move(s)});
+  }
+  return analyze_frames(frames, geometry, settings);
+}
+
+}  // namespace trapdem
