@@ -27,9 +27,9 @@ void write_line_chart_png(const std::filesystem::path& path, const LineChart& ch
   if (!(yhi > ylo)) yhi = ylo + 1.0;
   const double ystep = nice_step(yhi - ylo, 8);
   ylo = std::floor(ylo / ystep) * ystep;
-  yhi = std::ceil(yhi / ystep + 0.15) * ystep;  // room for the legend
+  yhi = std::ceil(yhi / ystep - 1e-3) * ystep;
   const double xstep = nice_step(xhi - xlo, 8);
-  xhi = std::ceil(xhi / xstep - 1e-9) * xstep;
+  xhi = std::ceil(xhi / xstep - 1e-3) * xstep;
 
   Canvas canvas(width, height);
   cairo_t* cr = canvas.cr();
@@ -74,7 +74,27 @@ void write_line_chart_png(const std::filesystem::path& path, const LineChart& ch
   double widest = 0.0;
   for (const auto& s : chart.series) widest = std::max(widest, text_box(cr, s.name, legend).w);
   const double lw = widest + 70.0, lh = 26.0 * chart.series.size() + 12.0;
-  const Rect box{plot.right() - lw - 12.0, plot.y + 12.0, lw, lh};
+  // The first corner whose box no data point falls in: top right, bottom right, top left, middle right.
+  auto data_inside = [&](const Rect& b) {
+    for (const auto& s : chart.series) {
+      for (std::size_t k = 0; k < s.x.size() && k < s.y.size(); ++k) {
+        const double x = f.px(s.x[k]), y = f.py(s.y[k]);
+        if (x >= b.x - 4 && x <= b.right() + 4 && y >= b.y - 4 && y <= b.bottom() + 4) return true;
+      }
+    }
+    return false;
+  };
+  const std::vector<Rect> candidates{{plot.right() - lw - 12.0, plot.y + 12.0, lw, lh},
+                                     {plot.right() - lw - 12.0, plot.bottom() - lh - 12.0, lw, lh},
+                                     {plot.x + 12.0, plot.y + 12.0, lw, lh},
+                                     {plot.right() - lw - 12.0, plot.y + 0.5 * (plot.h - lh), lw, lh}};
+  Rect box = candidates.front();
+  for (const Rect& c : candidates) {
+    if (!data_inside(c)) {
+      box = c;
+      break;
+    }
+  }
   cairo_set_source_rgba(cr, 1, 1, 1, 0.92);
   cairo_rectangle(cr, box.x, box.y, box.w, box.h);
   cairo_fill_preserve(cr);

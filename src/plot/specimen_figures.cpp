@@ -79,8 +79,16 @@ double map_height_for_width(const AnalysisResult& r, double width) {
 
 void draw_title(cairo_t* cr, double x, double y, const std::string& title, const std::string& subtitle, double size) {
   draw_text(cr, title, x, y, TextStyle{.size = size, .bold = true, .v = VAlign::top});
-  if (!subtitle.empty()) {
-    draw_text(cr, subtitle, x, y + 1.45 * size, TextStyle{.size = 0.78 * size, .colour = {0.3, 0.3, 0.3}, .v = VAlign::top});
+  // The subtitle's lines are separated by '\n'.
+  double line_y = y + 1.45 * size;
+  std::size_t start = 0;
+  while (start < subtitle.size()) {
+    std::size_t end = subtitle.find('\n', start);
+    if (end == std::string::npos) end = subtitle.size();
+    draw_text(cr, subtitle.substr(start, end - start), x, line_y,
+              TextStyle{.size = 0.75 * size, .colour = {0.3, 0.3, 0.3}, .v = VAlign::top});
+    line_y += 1.2 * size;
+    start = end + 1;
   }
 }
 
@@ -131,7 +139,7 @@ constexpr double left_margin = 95.0, bottom_margin = 80.0;
 }  // namespace
 
 double auto_strain_scale(const AnalysisResult& r, StrainKind kind) {
-  const double q = quantile(strain_values(r, kind), 0.98);
+  const double q = quantile(strain_values(r, kind), 0.95);
   if (!(q > 0.0)) return 1.0;
   const double p = std::pow(10.0, std::floor(std::log10(q)));
   for (double m : {1.0, 2.0, 2.5, 5.0, 10.0}) {
@@ -178,7 +186,7 @@ PlotFrame draw_strain_map(cairo_t* cr, Rect area, const AnalysisResult& r, Strai
 void write_strain_map_png(const std::filesystem::path& path, const AnalysisResult& r, StrainKind kind, double vmax,
                           int width) {
   if (!(vmax > 0.0)) vmax = auto_strain_scale(r, kind);
-  const double top = 95.0, right = 175.0;
+  const double top = 110.0, right = 175.0;
   const double plot_w = width - left_margin - right;
   const double plot_h = std::min(900.0, map_height_for_width(r, plot_w));
   const int height = static_cast<int>(top + plot_h + bottom_margin + 10.0);
@@ -189,7 +197,7 @@ void write_strain_map_png(const std::filesystem::path& path, const AnalysisResul
   const std::string what = kind == StrainKind::total ? "maximum shear strain γmax (total)"
                                                      : "accumulated incremental maximum shear strain";
   draw_title(cr, f.pixels().x, 18.0, fmt::format("{}: {}", r.geometry.name, what),
-             fmt::format("{}; from {} on the reference positions; {}; dashed: traced band centres",
+             fmt::format("{}; strain from {}, drawn on the reference positions\n{}; dashed lines: traced band centres",
                          displacement_text(r), format_mm(r.reference_displacement), view_text(r)),
              20.0);
   ColourBarStyle bar{.label = kind == StrainKind::total ? "γmax (-)" : "Σ Δγmax (-)", .extend_high = true};
@@ -199,7 +207,7 @@ void write_strain_map_png(const std::filesystem::path& path, const AnalysisResul
 }
 
 void write_displacement_contours_png(const std::filesystem::path& path, const AnalysisResult& r, int width) {
-  const double top = 95.0, right = 175.0;
+  const double top = 110.0, right = 175.0;
   const double plot_w = width - left_margin - right;
   const double plot_h = std::min(900.0, map_height_for_width(r, plot_w));
   const int height = static_cast<int>(top + plot_h + bottom_margin + 10.0);
@@ -244,7 +252,7 @@ void write_displacement_contours_png(const std::filesystem::path& path, const An
   draw_contours(cr, f, settlement, levels, [&](double v) { return format_tick(v * mm, step_mm); }, ContourStyle{});
   draw_specimen_axes(cr, f, 16.0);
   draw_title(cr, f.pixels().x, 18.0, fmt::format("{}: settlement contours (mm)", r.geometry.name),
-             fmt::format("{}; colour: vertical displacement w on the reference positions, grid {}; {}",
+             fmt::format("{}; colour: vertical displacement w on the reference positions\ngrid {}; {}",
                          displacement_text(r), format_mm(r.settings.grid_spacing), view_text(r)),
              20.0);
   draw_colour_bar(cr, {f.pixels().right() + 30.0, f.pixels().y, 24.0, f.pixels().h}, map, -travel, travel,
@@ -253,7 +261,7 @@ void write_displacement_contours_png(const std::filesystem::path& path, const An
 }
 
 void write_particles_png(const std::filesystem::path& path, const AnalysisResult& r, int width) {
-  const double top = 95.0, right = 175.0;
+  const double top = 110.0, right = 175.0;
   const double plot_w = width - left_margin - right;
   const double plot_h = std::min(900.0, map_height_for_width(r, plot_w));
   const int height = static_cast<int>(top + plot_h + bottom_margin + 10.0);
@@ -279,7 +287,7 @@ void write_particles_png(const std::filesystem::path& path, const AnalysisResult
   cairo_restore(cr);
   draw_specimen_axes(cr, f, 16.0);
   draw_title(cr, f.pixels().x, 18.0, fmt::format("{}: particles coloured by vertical displacement", r.geometry.name),
-             fmt::format("{}; current positions, radius to scale; {}", displacement_text(r), view_text(r)), 20.0);
+             fmt::format("{}\ncurrent positions, radius to scale; {}", displacement_text(r), view_text(r)), 20.0);
   draw_colour_bar(cr, {f.pixels().right() + 30.0, f.pixels().y, 24.0, f.pixels().h}, map, -travel, travel,
                   ColourBarStyle{.label = "vertical displacement w (mm)", .tick_scale = mm});
   canvas.write_png(path);

@@ -16,7 +16,7 @@ namespace trapdem::plot {
 
 enum class StrainKind { total, incremental };
 
-// The upper end of the colour scale: the 98th percentile of gamma_max rounded up to 1, 2, 2.5 or
+// The upper end of the colour scale: the 95th percentile of gamma_max rounded up to 1, 2, 2.5 or
 // 5 x 10^k (values above saturate; the colour bar marks it).
 double auto_strain_scale(const AnalysisResult& result, StrainKind kind = StrainKind::total);
 
