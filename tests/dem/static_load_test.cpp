@@ -50,9 +50,9 @@ TEST(StaticLoad, BedInBoxOfWallsCarriesItsWeight) {
   EXPECT_NEAR(total.z, -weight, 1e-3 * weight);
   EXPECT_NEAR(total.x, 0.0, 1e-3 * weight);
   EXPECT_NEAR(total.y, 0.0, 1e-3 * weight);
-  // The floor carries most of it but not more than all of it (side friction carries the rest).
+  // The floor carries most of it. (Not necessarily less than all of it: a bed that sprang back
+  // after compacting is held down by the side walls' friction, and the floor then carries more.)
   EXPECT_GT(floor_share, 0.5);
-  EXPECT_LT(floor_share, 1.0 + 1e-3);
   // Wall forces are loads on the walls: every side wall is pushed outwards.
   EXPECT_LT(sim.walls()[1].force.x, 0.0);
   EXPECT_GT(sim.walls()[2].force.x, 0.0);
