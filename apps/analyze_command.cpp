@@ -56,14 +56,18 @@ SpecimenGeometry load_specimen_geometry(const fs::path& config_file) {
                                  "resolved.toml, or --config FILE with [box] and [trapdoor])",
                                  config_file.string()));
   }
+  // Only the geometry is read (with the experiment's defaults), so a short file with [box] and
+  // [trapdoor] describes a run made with another code; other keys are ignored.
   Config config = Config::load_file(config_file.string());
-  const ExperimentConfig e = ExperimentConfig::from(config);
+  const ExperimentConfig defaults;
   SpecimenGeometry g;
-  g.name = e.name;
-  g.box_width = e.box.width;
-  g.box_depth = e.box.depth;
-  g.box_height = e.box.height;
-  g.trapdoor = {e.trapdoor.centre, e.trapdoor.width, 0.0};
+  g.name = config.get_string("name", defaults.name);
+  g.box_width = config.get_double("box.width", defaults.box.width, "m", Range::positive());
+  g.box_depth = config.get_double("box.depth", defaults.box.depth, "m", Range::positive());
+  g.box_height = config.get_double("box.height", defaults.box.height, "m", Range::positive());
+  const double width = config.get_double("trapdoor.width", defaults.trapdoor.width, "m", Range::positive());
+  const double centre = config.get_double("trapdoor.centre", 0.5 * g.box_width, "m", Range::closed(0.0, g.box_width));
+  g.trapdoor = {centre, width, 0.0};
   return g;
 }
 

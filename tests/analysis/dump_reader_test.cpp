@@ -1,0 +1,106 @@
+// LAMMPS/LIGGGHTS text dumps: columns in any order, scaled coordinates, diameter instead of
+// radius; every malformed input names the file and line.
+#include <gtest/gtest.h>
+
+#include <filesystem>
+#include <fstream>
+
+#include "analysis/analysis_run.hpp"
+#include "analysis/dump_reader.hpp"
+#include "dem/errors.hpp"
+
+using namespace trapdem;
+
+namespace {
+
+const char* header = "ITEM: TIMESTEP\n1000\nITEM: NUMBER OF ATOMS\n2\nITEM: BOX BOUNDS ff ff ff\n0 0.2\n0 0.01\n0 0.4\n";
+
+// The message of the InputError that parsing `text` throws ("" if none).
+std::string error_of(const std::string& text) {
+  try {
+    parse_dump(text, "run.dump");
+  } catch (const InputError& e) {
+    return e.what();
+  }
+  return "";
+}
+
+}  // namespace
+
+TEST(DumpReader, ReadsColumnsInAnyOrder) {
+  const Snapshot s = parse_dump(std::string(header) +
+                                    "ITEM: ATOMS type radius z id y x vx\n1 0.001 0.05 7 0.005 0.1 0\n"
+                                    "1 0.0015 0.06 3 0.004 0.12 0\n",
+                                "run.dump");
+  ASSERT_EQ(s.size(), 2u);
+  EXPECT_EQ(s.step, 1000);
+  EXPECT_EQ(s.id[0], 7);
+  EXPECT_EQ(s.id[1], 3);
+  EXPECT_DOUBLE_EQ(s.position[1].x, 0.12);
+  EXPECT_DOUBLE_EQ(s.position[1].y, 0.004);
+  EXPECT_DOUBLE_EQ(s.position[1].z, 0.06);
+  EXPECT_DOUBLE_EQ(s.radius[1], 0.0015);
+}
+
+TEST(DumpReader, ScaledCoordinatesAndDiameter) {
+  const Snapshot s = parse_dump(std::string(header) + "ITEM: ATOMS id xs ys zs diameter\n1 0.5 0.5 0.25 0.002\n"
+                                                      "2 0 1 1 0.004\n",
+                                "run.dump");
+  EXPECT_DOUBLE_EQ(s.position[0].x, 0.1);
+  EXPECT_DOUBLE_EQ(s.position[0].z, 0.1);
+  EXPECT_DOUBLE_EQ(s.position[1].y, 0.01);
+  EXPECT_DOUBLE_EQ(s.radius[0], 0.001);
+  EXPECT_DOUBLE_EQ(s.radius[1], 0.002);
+}
+
+TEST(DumpReader, BadInputNamesFileAndLine) {
+  const std::string atoms = "ITEM: ATOMS id x y z radius\n";
+  EXPECT_EQ(error_of(std::string(header) + atoms + "1 0.1 0.005 0.05 0.001\n2 0.1 oops 0.05 0.001\n"),
+            "run.dump:11: coordinate: 'oops' is not a number");
+  EXPECT_EQ(error_of(std::string(header) + atoms + "1 0.1 0.005 0.05 0.001\n2 0.1 0.005\n"),
+            "run.dump:11: expected 5 columns, found 3");
+  EXPECT_EQ(error_of(std::string(header) + "ITEM: ATOMS id x y z\n1 0.1 0.005 0.05\n2 0.1 0.005 0.05\n"),
+            "run.dump:9: the ATOMS columns lack radius (dump with: id x y z radius)");
+  EXPECT_EQ(error_of(std::string(header) + atoms + "1 0.1 0.005 0.05 0.001\n1 0.1 0.005 0.06 0.001\n"),
+            "run.dump:11: id 1 appears twice");
+  EXPECT_EQ(error_of(std::string(header) + atoms + "1 0.1 0.005 0.05 0.001\nITEM: TIMESTEP\n2000\n"),
+            "run.dump:11: expected 2 atom lines, found 1");
+  EXPECT_EQ(error_of(std::string(header) + atoms + "1 0.1 0.005 0.05 0.001\n2 0.1 0.005 0.05 -1\n"),
+            "run.dump:11: the radius must be positive");
+  EXPECT_EQ(error_of(std::string(header) + atoms + "1 0.1 0.005 0.05 0.001\n2 0.1 0.005 0.05 0.001\nITEM: TIMESTEP\n5\n"),
+            "run.dump:12: a second TIMESTEP: give one dump file per snapshot");
+  EXPECT_EQ(error_of("ITEM: TIMESTEP\nabc\n"), "run.dump:2: timestep: 'abc' is not a number");
+  EXPECT_EQ(error_of("hello\n"), "run.dump:1: expected an 'ITEM:' line, found 'hello'");
+  EXPECT_EQ(error_of("ITEM: TIMESTEP\n1\n"), "run.dump: no ITEM: ATOMS section (not a LAMMPS/LIGGGHTS text dump?)");
+  EXPECT_THROW(read_dump_file("/nonexistent/run.dump"), FileError);
+}
+
+// Dumps through the whole analysis: the same particles in two files, the second moved down
+// uniformly with the trapdoor's 1 mm: no strain, the matched count is every particle.
+TEST(DumpReader, FeedsTheAnalysis) {
+  namespace fs = std::filesystem;
+  const fs::path dir = fs::temp_directory_path() / "trapdem-dump-analysis";
+  fs::remove_all(dir);
+  fs::create_directories(dir);
+  std::vector<fs::path> files;
+  for (int f = 0; f < 2; ++f) {
+    files.push_back(dir / ("dump." + std::to_string(f)));
+    std::ofstream out(files.back());
+    int n = 0;
+    std::string atoms;
+    for (int i = 0; i < 40; ++i) {
+      for (int j = 0; j < 20; ++j) {
+        const double x = 0.0025 + 0.005 * i + 0.0025 * (j % 2), z = 0.0025 + 0.0043 * j - 0.001 * f;
+        atoms += std::to_string(++n) + " " + std::to_string(x) + " 0.0075 " + std::to_string(z) + " 0.0025\n";
+      }
+    }
+    out << "ITEM: TIMESTEP\n" << f << "\nITEM: NUMBER OF ATOMS\n" << n
+        << "\nITEM: BOX BOUNDS ff ff ff\n0 0.2\n0 0.01\n0 0.1\nITEM: ATOMS id x y z radius\n" << atoms;
+  }
+  SpecimenGeometry g{"dumps", 0.2, 0.01, 0.14, {0.1, 0.05, 0.0}};
+  const AnalysisResult r = analyze_dump_files(files, {0.0, 0.001}, g, AnalysisSettings{});
+  EXPECT_EQ(r.matched_particles, 800u);
+  EXPECT_EQ(r.id.size(), 800u);
+  for (double gamma : r.gamma_max) EXPECT_LT(gamma, 1e-9);
+  EXPECT_THROW(analyze_dump_files(files, {0.0}, g, AnalysisSettings{}), InputError);
+}
