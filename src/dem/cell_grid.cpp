@@ -38,27 +38,33 @@ CellGrid CellGrid::covering(const std::vector<Vec3>& positions, const Domain& do
     if (total <= max_cells) break;
     size *= std::cbrt(double(total) / double(max_cells)) * 1.01;
   }
+  std::array<int, 3> axes{0, 1, 2};  // fastest to slowest
+  std::stable_sort(axes.begin(), axes.end(), [&](int a, int b) { return g.count[a] < g.count[b]; });
+  std::size_t s = 1;
+  for (int a : axes) {
+    g.stride[a] = s;
+    s *= std::size_t(g.count[a]);
+  }
   return g;
 }
 
 int CellGrid::neighbours(std::uint32_t cell, std::array<std::uint32_t, 27>& out) const {
-  const int cx = int(cell % count[0]);
-  const int cy = int((cell / count[0]) % count[1]);
-  const int cz = int(cell / (std::size_t(count[0]) * count[1]));
+  int centre[3];
+  for (int a = 0; a < 3; ++a) centre[a] = int((cell / stride[a]) % std::size_t(count[a]));
   int n = 0;
   for (int dz = -1; dz <= 1; ++dz) {
-    int z = cz + dz;
+    int z = centre[2] + dz;
     if (periodic[2]) z = (z + count[2]) % count[2];
     else if (z < 0 || z >= count[2]) continue;
     for (int dy = -1; dy <= 1; ++dy) {
-      int y = cy + dy;
+      int y = centre[1] + dy;
       if (periodic[1]) y = (y + count[1]) % count[1];
       else if (y < 0 || y >= count[1]) continue;
       for (int dx = -1; dx <= 1; ++dx) {
-        int x = cx + dx;
+        int x = centre[0] + dx;
         if (periodic[0]) x = (x + count[0]) % count[0];
         else if (x < 0 || x >= count[0]) continue;
-        const auto c = static_cast<std::uint32_t>((z * count[1] + y) * count[0] + x);
+        const auto c = static_cast<std::uint32_t>(x * stride[0] + y * stride[1] + z * stride[2]);
         if (std::find(out.begin(), out.begin() + n, c) == out.begin() + n) out[n++] = c;
       }
     }
