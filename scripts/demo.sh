@@ -16,4 +16,8 @@ else
 fi
 echo
 grep -E '^stage |^finished' "$out/run.log" || true
-echo "ground reaction curve: $out/trapdoor.csv; particles for ParaView: $out/snapshots.xmf"
+echo
+"$trapdem" analyze "$out" --incremental
+echo
+echo "figures: $out/analysis/*.png; fields for ParaView: $out/analysis/fields.xmf and $out/snapshots.xmf"
+echo "ground reaction curve: $out/trapdoor.csv; metrics: $out/analysis/metrics.json"
