@@ -6,6 +6,7 @@
 #include <limits>
 
 #include "dem/errors.hpp"
+#include "io/text.hpp"
 
 namespace trapdem {
 
@@ -63,22 +64,6 @@ const Json& Json::operator[](const std::string& key) const {
 
 namespace {
 
-void write_string(std::string& out, const std::string& s) {
-  out += '"';
-  for (char c : s) {
-    switch (c) {
-      case '"': out += "\\\""; break;
-      case '\\': out += "\\\\"; break;
-      case '\n': out += "\\n"; break;
-      case '\t': out += "\\t"; break;
-      case '\r': out += "\\r"; break;
-      default:
-        if (static_cast<unsigned char>(c) < 0x20) out += fmt::format("\\u{:04x}", static_cast<unsigned>(c));
-        else out += c;
-    }
-  }
-  out += '"';
-}
 
 }  // namespace
 
@@ -93,7 +78,7 @@ void Json::write(std::string& out, int indent, int depth) const {
       else if (number_ == std::floor(number_) && std::abs(number_) < 1e15) out += fmt::format("{}", static_cast<long long>(number_));
       else out += fmt::format("{}", number_);  // shortest round-trip representation
       break;
-    case Type::string: write_string(out, string_); break;
+    case Type::string: out += quoted(string_); break;
     case Type::array: {
       // Arrays of numbers stay on one line.
       bool flat = true;
@@ -113,7 +98,7 @@ void Json::write(std::string& out, int indent, int depth) const {
       for (std::size_t k = 0; k < members_.size(); ++k) {
         if (k) out += ',';
         out += "\n" + pad;
-        write_string(out, members_[k].first);
+        out += quoted(members_[k].first);
         out += ": ";
         members_[k].second.write(out, indent, depth + 1);
       }

@@ -12,6 +12,8 @@
 #include <fmt/format.h>
 #include <toml++/toml.h>
 
+#include "io/text.hpp"
+
 namespace trapdem {
 
 struct Config::State {
@@ -80,30 +82,12 @@ std::string format_double(double x) {
   return s;
 }
 
-std::string quote(std::string_view text) {
-  std::string out = "\"";
-  for (char c : text) {
-    switch (c) {
-      case '"': out += "\\\""; break;
-      case '\\': out += "\\\\"; break;
-      case '\n': out += "\\n"; break;
-      case '\t': out += "\\t"; break;
-      case '\r': out += "\\r"; break;
-      case '\b': out += "\\b"; break;
-      case '\f': out += "\\f"; break;
-      default:
-        if (static_cast<unsigned char>(c) < 0x20) out += fmt::format("\\u{:04X}", int(c));
-        else out += c;
-    }
-  }
-  return out + "\"";
-}
 
 std::string format_value(const toml::node& node) {
   if (auto v = node.as_floating_point()) return format_double(v->get());
   if (auto v = node.as_integer()) return std::to_string(v->get());
   if (auto v = node.as_boolean()) return v->get() ? "true" : "false";
-  if (auto v = node.as_string()) return quote(v->get());
+  if (auto v = node.as_string()) return quoted(v->get());
   if (auto a = node.as_array()) {
     std::string out = "[";
     for (std::size_t i = 0; i < a->size(); ++i) out += (i ? ", " : "") + format_value(*a->get(i));
@@ -379,7 +363,7 @@ std::string Config::get_choice(std::string_view key, std::string_view default_va
                                const std::vector<std::string>& choices) {
   const std::string k = full_key(key);
   std::string listed;
-  for (const std::string& c : choices) listed += (listed.empty() ? "" : ", ") + quote(c);
+  for (const std::string& c : choices) listed += (listed.empty() ? "" : ", ") + quoted(c);
   const std::string expected = "one of " + listed;
   state_->used.insert(k);  // even if the value is then refused: it is a known key
   const toml::node* node = find(*state_, k);
@@ -597,7 +581,7 @@ void Config::add_derived(std::string_view key, std::string_view value) {
 
 namespace {
 
-std::string key_text(std::string_view key) { return is_bare_key(key) ? std::string(key) : quote(key); }
+std::string key_text(std::string_view key) { return is_bare_key(key) ? std::string(key) : quoted(key); }
 
 // Values of a table first, then its sub-tables under [headers]: the layout people write by hand.
 void emit_table(const Config::State& s, const toml::table& table, const std::string& path, std::string& out) {

@@ -14,6 +14,7 @@
 #include <fmt/ostream.h>
 
 #include "dem/errors.hpp"
+#include "io/text.hpp"
 
 namespace trapdem {
 
@@ -28,18 +29,6 @@ struct Line {
   std::string comment;                 // text after '#', trimmed
 };
 
-std::vector<std::string_view> split(std::string_view s) {
-  std::vector<std::string_view> out;
-  std::size_t i = 0;
-  while (i < s.size()) {
-    while (i < s.size() && (s[i] == ' ' || s[i] == '\t' || s[i] == '\r')) ++i;
-    std::size_t j = i;
-    while (j < s.size() && s[j] != ' ' && s[j] != '\t' && s[j] != '\r') ++j;
-    if (j > i) out.push_back(s.substr(i, j - i));
-    i = j;
-  }
-  return out;
-}
 
 std::string join(const std::vector<std::string_view>& tokens, std::size_t from) {
   std::string out;
@@ -117,7 +106,7 @@ class Parser {
       const std::size_t hash = s.find('#');
       const std::string_view body = std::string_view(s).substr(0, hash);
       if (hash != std::string::npos) l.comment = trim(std::string_view(s).substr(hash + 1));
-      l.tokens = split(body);
+      l.tokens = split_words(body);
       if (!l.tokens.empty()) lines_.push_back(std::move(l));
     }
     end_line_ = number;
