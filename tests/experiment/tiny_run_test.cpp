@@ -161,3 +161,22 @@ TEST(TinyRun, OutputFolderHoldingARunIsRefused) {
   }
   fs::remove_all(dir);
 }
+
+// A periodic depth (no front and back walls) runs through all stages too, and at the end of spin-up
+// the base walls carry the weight on their own: without front and back walls nothing else can.
+TEST(TinyRun, PeriodicDepthRunsAndTheBaseCarriesTheWeight) {
+  omp_set_num_threads(1);
+  TrapdoorExperiment experiment(tiny_config({"box.depth_boundary=periodic", "pluviation.fill_height=0.02",
+                                             "settling.max_time=0.04", "trapdoor.travel=0.0015",
+                                             "output.snapshot_displacements=[0.0]"}));
+  for (const Wall& w : experiment.simulation().walls()) {
+    EXPECT_NE(w.name, "front");
+    EXPECT_NE(w.name, "back");
+  }
+  LoadRecorder recorder;
+  recorder.experiment = &experiment;
+  ASSERT_TRUE(experiment.run(recorder));
+  EXPECT_EQ(recorder.finished.size(), 4u);
+  // Same tolerance and reason as in AllStagesLoadsAndArching.
+  EXPECT_NEAR(recorder.walls_vertical_load / recorder.weight, 1.0, 5e-3);
+}
