@@ -139,13 +139,6 @@ void build_pairs(const Particles& p, const CellSort& cells, const Domain& domain
                      [&](std::uint32_t j) { out.partner[k++] = j; });
     std::sort(out.partner.begin() + out.first[i], out.partner.begin() + out.first[i + 1]);
   }
-  // Incident lists: for every particle, the pairs where it is the partner, in pair order.
-  out.incident_first.assign(n + 1, 0);
-  for (std::uint32_t j : out.partner) ++out.incident_first[j + 1];
-  std::partial_sum(out.incident_first.begin(), out.incident_first.end(), out.incident_first.begin());
-  out.incident_pair.resize(out.partner.size());
-  std::vector<std::uint32_t> fill(out.incident_first.begin(), out.incident_first.end() - 1);
-  for (std::size_t k = 0; k < out.partner.size(); ++k) out.incident_pair[fill[out.partner[k]]++] = static_cast<std::uint32_t>(k);
   out.history.assign(out.partner.size(), ContactHistory{});
 }
 

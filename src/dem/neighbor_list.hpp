@@ -14,14 +14,11 @@
 namespace trapdem {
 
 // Half list in CSR form: particle i's pairs are (i, partner[k]) for k in [first[i], first[i+1]),
-// each with partner[k] > i, so each pair is listed once. incident_* lists, per particle, the pairs
-// in which it is the partner: the second half of the force gather, without write conflicts.
+// each with partner[k] > i, so each pair is listed once.
 struct PairList {
   std::vector<std::uint32_t> first;
   std::vector<std::uint32_t> partner;
   std::vector<ContactHistory> history;
-  std::vector<std::uint32_t> incident_first;
-  std::vector<std::uint32_t> incident_pair;
 
   std::size_t size() const { return partner.size(); }
   std::uint32_t owner_of(std::size_t pair) const;  // binary search in first (slow; tools and tests)

@@ -136,7 +136,6 @@ class Simulation {
   // Set by the kernels, read by check_stability().
   double max_displacement2_ = 0.0;
   double max_overlap_seen_ = 0.0;
-  std::int64_t worst_overlap_pair_ = -1;
   std::int64_t bad_particle_ = -1;     // non-finite state
   std::int64_t escaped_particle_ = -1;
 };

@@ -142,8 +142,6 @@ void write_checkpoint(const std::filesystem::path& path, const Checkpoint& c) {
     const Hdf5Group pairs = file.create_group("pairs");
     pairs.write_uint32s("first", c.lists.pairs.first);
     pairs.write_uint32s("partner", c.lists.pairs.partner);
-    pairs.write_uint32s("incident_first", c.lists.pairs.incident_first);
-    pairs.write_uint32s("incident_pair", c.lists.pairs.incident_pair);
     write_history(pairs, c.lists.pairs.history);
 
     const Hdf5Group wall_list = file.create_group("wall_candidates");
@@ -184,8 +182,6 @@ Checkpoint read_checkpoint(const std::filesystem::path& path) {
   const Hdf5Group pairs = file.group("pairs");
   c.lists.pairs.first = pairs.read_uint32s("first");
   c.lists.pairs.partner = pairs.read_uint32s("partner");
-  c.lists.pairs.incident_first = pairs.read_uint32s("incident_first");
-  c.lists.pairs.incident_pair = pairs.read_uint32s("incident_pair");
   c.lists.pairs.history = read_history(pairs);
 
   const Hdf5Group wall_list = file.group("wall_candidates");
