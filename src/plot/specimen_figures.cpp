@@ -183,16 +183,30 @@ PlotFrame draw_strain_map(cairo_t* cr, Rect area, const AnalysisResult& r, Strai
   return f;
 }
 
+namespace {
+
+// The page of a single-map figure: a title band on top, the colour bar on the right, the map's
+// height following the specimen's aspect (at most 900 px).
+struct MapLayout {
+  int height;  // px, of the whole figure
+  Rect area;   // where the framed map goes
+};
+
+MapLayout map_layout(const AnalysisResult& r, int width) {
+  const double top = 110.0, right = 175.0;
+  const double plot_h = std::min(900.0, map_height_for_width(r, width - left_margin - right));
+  return {static_cast<int>(top + plot_h + bottom_margin + 10.0), Rect{0.0, top, width - right, plot_h + bottom_margin}};
+}
+
+}  // namespace
+
 void write_strain_map_png(const std::filesystem::path& path, const AnalysisResult& r, StrainKind kind, double vmax,
                           int width) {
   if (!(vmax > 0.0)) vmax = auto_strain_scale(r, kind);
-  const double top = 110.0, right = 175.0;
-  const double plot_w = width - left_margin - right;
-  const double plot_h = std::min(900.0, map_height_for_width(r, plot_w));
-  const int height = static_cast<int>(top + plot_h + bottom_margin + 10.0);
-  Canvas canvas(width, height);
+  const MapLayout layout = map_layout(r, width);
+  Canvas canvas(width, layout.height);
   cairo_t* cr = canvas.cr();
-  const Rect area{0.0, top, width - right, plot_h + bottom_margin};
+  const Rect area = layout.area;
   const PlotFrame f = draw_strain_map(cr, area, r, kind, vmax);
   const std::string what = kind == StrainKind::total ? "maximum shear strain γmax (total)"
                                                      : "accumulated incremental maximum shear strain";
@@ -207,13 +221,10 @@ void write_strain_map_png(const std::filesystem::path& path, const AnalysisResul
 }
 
 void write_displacement_contours_png(const std::filesystem::path& path, const AnalysisResult& r, int width) {
-  const double top = 110.0, right = 175.0;
-  const double plot_w = width - left_margin - right;
-  const double plot_h = std::min(900.0, map_height_for_width(r, plot_w));
-  const int height = static_cast<int>(top + plot_h + bottom_margin + 10.0);
-  Canvas canvas(width, height);
+  const MapLayout layout = map_layout(r, width);
+  Canvas canvas(width, layout.height);
   cairo_t* cr = canvas.cr();
-  const PlotFrame f = map_frame({0.0, top, width - right, plot_h + bottom_margin}, r, left_margin, bottom_margin);
+  const PlotFrame f = map_frame(layout.area, r, left_margin, bottom_margin);
   const double travel = r.trapdoor_travel();
   const ColourMap map(ColourMapKind::diverging);
   const GridField& w = r.vertical_displacement;
@@ -261,13 +272,10 @@ void write_displacement_contours_png(const std::filesystem::path& path, const An
 }
 
 void write_particles_png(const std::filesystem::path& path, const AnalysisResult& r, int width) {
-  const double top = 110.0, right = 175.0;
-  const double plot_w = width - left_margin - right;
-  const double plot_h = std::min(900.0, map_height_for_width(r, plot_w));
-  const int height = static_cast<int>(top + plot_h + bottom_margin + 10.0);
-  Canvas canvas(width, height);
+  const MapLayout layout = map_layout(r, width);
+  Canvas canvas(width, layout.height);
   cairo_t* cr = canvas.cr();
-  const PlotFrame f = map_frame({0.0, top, width - right, plot_h + bottom_margin}, r, left_margin, bottom_margin);
+  const PlotFrame f = map_frame(layout.area, r, left_margin, bottom_margin);
   const double travel = r.trapdoor_travel();
   const ColourMap map(ColourMapKind::diverging);
   cairo_save(cr);
