@@ -7,6 +7,7 @@
 #include "analyze_command.hpp"
 #include "dem/errors.hpp"
 #include "io/file_error.hpp"
+#include "piv_command.hpp"
 #include "run_command.hpp"
 #include "showcase.hpp"
 
@@ -63,6 +64,45 @@ int main(int argc, char** argv) {
   fig->add_option("--front-depth", figure.front_depth, "Front view depth from the glass");
   fig->add_option("--max-strain", figure.max_strain, "Top of the gamma_max colour scale (default: automatic)");
 
+  trapdem::app::PivOptions piv;
+  auto* piv_cmd = app.add_subcommand("piv", "PIV of a photograph sequence: displacements, strain, figures (docs/piv.md)");
+  piv_cmd->add_option("images", piv.images, "Images in order (any format OpenCV reads)")->required();
+  piv_cmd->add_option("--out", piv.out, "Output folder")->required();
+  piv_cmd->add_option("--subset", piv.subset, "Subset side, px (default 32)");
+  piv_cmd->add_option("--step", piv.step, "Spacing of subset centres, px (default 16)");
+  piv_cmd->add_option("--roi", piv.roi, "Region of interest x0,y0,x1,y1 in px of image 1 (default: whole image)");
+  auto* piv_scale = piv_cmd->add_option("--scale", piv.scale, "mm per px: model coordinates x right, z up");
+  piv_cmd->add_option("--origin", piv.origin, "With --scale: model coordinates X,Z (mm) of pixel (0,0) (default 0,0)");
+  piv_cmd->add_option("--control-points", piv.control_points, "CSV x_px,y_px,x_model,z_model: fit to model coordinates")
+      ->excludes(piv_scale);
+  piv_cmd->add_option("--fit", piv.fit, "Control point fit: affine or projective (default)")
+      ->check(CLI::IsMember({"affine", "projective"}));
+  piv_cmd->add_option("--threads", piv.threads, "OpenMP threads (default: all cores)")->check(CLI::NonNegativeNumber);
+  piv_cmd->add_flag("--no-figures", piv.no_figures, "Displacements, piv.h5 and strain only");
+  piv_cmd->add_flag("--quiet", piv.quiet, "No progress lines");
+
+  trapdem::app::SynthOptions synth;
+  auto* synth_cmd = app.add_subcommand("synth", "Synthetic speckle images under a known displacement field, with truth.csv");
+  synth_cmd->add_option("--field", synth.field, "rigid, strain, shear or trapdoor")
+      ->check(CLI::IsMember({"rigid", "strain", "shear", "trapdoor"}));
+  synth_cmd->add_option("--out", synth.out, "Output folder")->required();
+  synth_cmd->add_option("--size", synth.size, "WIDTHxHEIGHT px (default 512x512)");
+  synth_cmd->add_option("--images", synth.images, "Images including the undeformed first (default 2)");
+  synth_cmd->add_option("--noise", synth.noise, "Gaussian noise, grey levels (default 2)");
+  synth_cmd->add_option("--magnitude", synth.magnitude,
+                        "Last image: shift px (rigid; v = 0.6 u), strain (strain: exx = -eyy), gamma (shear), settlement px (trapdoor)");
+  synth_cmd->add_option("--seed", synth.seed, "Random seed (default 1)");
+
+  trapdem::app::RenderOptions render;
+  auto* render_cmd = app.add_subcommand("render", "DEM snapshots as the camera sees them through the front window (PNGs)");
+  render_cmd->add_option("dir", render.dir, "Run folder (snapshots.h5, resolved.toml)")->required();
+  render_cmd->add_option("--out", render.out, "Output folder (default DIR/camera)");
+  render_cmd->add_option("--px-per-mm", render.px_per_mm, "Image scale (default 4)")->check(CLI::PositiveNumber);
+  render_cmd->add_option("--config", render.config, "Geometry (default DIR/resolved.toml)");
+  render_cmd->add_flag("--check", render.check, "Run PIV on the images and compare with the particle displacements");
+  render_cmd->add_option("--subset", render.subset, "--check subset size, px (default about 3 diameters)");
+  render_cmd->add_option("--threads", render.threads, "OpenMP threads for --check")->check(CLI::NonNegativeNumber);
+
   CLI11_PARSE(app, argc, argv);
   try {
     if (run_cmd->parsed()) return trapdem::app::run_experiment(run);
@@ -70,6 +110,9 @@ int main(int argc, char** argv) {
     if (sc->parsed()) return trapdem::app::run_showcase(showcase);
     if (an->parsed()) return trapdem::app::run_analyze(analyze);
     if (fig->parsed()) return trapdem::app::run_figure(figure);
+    if (piv_cmd->parsed()) return trapdem::app::run_piv_command(piv);
+    if (synth_cmd->parsed()) return trapdem::app::run_synth_command(synth);
+    if (render_cmd->parsed()) return trapdem::app::run_render_command(render);
   } catch (const trapdem::InputError& e) {
     fmt::print(stderr, "trapdem: input error: {}\n", e.what());
     return 2;
