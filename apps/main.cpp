@@ -10,6 +10,7 @@
 #include "piv_command.hpp"
 #include "run_command.hpp"
 #include "showcase.hpp"
+#include "sinkhole_command.hpp"
 
 int main(int argc, char** argv) {
   CLI::App app{"trapdem: trapdoor experiments with the discrete element method"};
@@ -64,6 +65,16 @@ int main(int argc, char** argv) {
   fig->add_option("--front-depth", figure.front_depth, "Front view depth from the glass");
   fig->add_option("--max-strain", figure.max_strain, "Top of the gamma_max colour scale (default: automatic)");
 
+  trapdem::app::SinkholeOptions sinkhole;
+  auto* sink = app.add_subcommand("sinkhole", "Maximum sinkhole size by scenario supposition (SANS 1936); --from DIR: beside a DEM run's");
+  sink->add_option("--throat", sinkhole.throat, "Cavity throat diameter, e.g. 2.5 or 2.5m");
+  sink->add_option("--layer", sinkhole.layers,
+                   "Blanket layer THICKNESS:ANGLE_OF_DRAW (m, degrees from the vertical), cavity upward (repeatable); "
+                   "with --from: :ANGLE only")
+      ->allow_extra_args(false);
+  sink->add_option("--from", sinkhole.from, "DEM run folder analysed by `trapdem analyze` (analysis/metrics.json)");
+  sink->add_flag("--json", sinkhole.json, "JSON on stdout instead of the table");
+
   trapdem::app::PivOptions piv;
   auto* piv_cmd = app.add_subcommand("piv", "PIV of a photograph sequence: displacements, strain, figures (docs/piv.md)");
   piv_cmd->add_option("images", piv.images, "Images in order (any format OpenCV reads)")->required();
@@ -113,6 +124,7 @@ int main(int argc, char** argv) {
     if (piv_cmd->parsed()) return trapdem::app::run_piv_command(piv);
     if (synth_cmd->parsed()) return trapdem::app::run_synth_command(synth);
     if (render_cmd->parsed()) return trapdem::app::run_render_command(render);
+    if (sink->parsed()) return trapdem::app::run_sinkhole(sinkhole);
   } catch (const trapdem::InputError& e) {
     fmt::print(stderr, "trapdem: input error: {}\n", e.what());
     return 2;

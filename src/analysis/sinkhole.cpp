@@ -1,0 +1,287 @@
+#include "analysis/sinkhole.hpp"
+
+#include <cmath>
+#include <fmt/format.h>
+#include <fstream>
+#include <limits>
+#include <numbers>
+#include <sstream>
+
+#include "analysis/length_text.hpp"
+#include "dem/errors.hpp"
+#include "io/config.hpp"
+
+namespace trapdem {
+
+namespace fs = std::filesystem;
+
+namespace {
+
+constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
+constexpr double kDegree = std::numbers::pi / 180.0;
+
+std::string_view trim(std::string_view s) {
+  const auto first = s.find_first_not_of(" \t");
+  if (first == std::string_view::npos) return {};
+  const auto last = s.find_last_not_of(" \t");
+  return s.substr(first, last - first + 1);
+}
+
+double parse_angle(std::string_view text, std::string_view what, std::string_view whole) {
+  std::string s(trim(text));
+  if (s.size() > 3 && s.ends_with("deg")) s = std::string(trim(std::string_view(s).substr(0, s.size() - 3)));
+  std::size_t used = 0;
+  double value = kNaN;
+  try {
+    value = std::stod(s, &used);
+  } catch (const std::exception&) {
+    used = 0;
+  }
+  if (s.empty() || used != s.size() || !std::isfinite(value))
+    throw InputError(fmt::format("{} '{}': the angle of draw '{}' is not a number (degrees from the vertical)", what,
+                                 whole, s));
+  return value;
+}
+
+void check_layer(const BlanketLayer& l, std::string_view what) {
+  if (!(l.thickness >= 0.0) && !std::isnan(l.thickness))
+    throw InputError(fmt::format("{}: thickness {} m is negative; a blanket layer is at least 0 m thick", what,
+                                 l.thickness));
+  if (!(l.angle_of_draw_deg >= 0.0 && l.angle_of_draw_deg < 90.0))
+    throw InputError(fmt::format("{}: angle of draw {} deg is outside [0, 90): it is measured from the vertical "
+                                 "(0 = a vertical-sided collapse; 90 would be horizontal)",
+                                 what, l.angle_of_draw_deg));
+}
+
+double number_or_nan(const Json& object, const std::string& key) {
+  if (object.type() != Json::Type::object || !object.contains(key)) return kNaN;
+  const Json& v = object[key];
+  return v.type() == Json::Type::number ? v.as_number() : kNaN;
+}
+
+const Json& member_or_null(const Json& object, const std::string& key) {
+  static const Json null;
+  if (object.type() != Json::Type::object || !object.contains(key)) return null;
+  return object[key];
+}
+
+}  // namespace
+
+SinkholeSizeClass classify_sinkhole(double d) {
+  if (d < 2.0) return SinkholeSizeClass::small;
+  if (d < 5.0) return SinkholeSizeClass::medium;
+  if (d <= 15.0) return SinkholeSizeClass::large;
+  return SinkholeSizeClass::very_large;
+}
+
+const char* size_class_name(SinkholeSizeClass c) {
+  switch (c) {
+    case SinkholeSizeClass::small: return "small";
+    case SinkholeSizeClass::medium: return "medium";
+    case SinkholeSizeClass::large: return "large";
+    case SinkholeSizeClass::very_large: return "very large";
+  }
+  return "?";
+}
+
+const char* size_class_range(SinkholeSizeClass c) {
+  switch (c) {
+    case SinkholeSizeClass::small: return "< 2 m";
+    case SinkholeSizeClass::medium: return "2-5 m";
+    case SinkholeSizeClass::large: return "5-15 m";
+    case SinkholeSizeClass::very_large: return "> 15 m";
+  }
+  return "?";
+}
+
+BlanketLayer parse_layer(std::string_view text, std::string_view what, bool angle_only) {
+  const std::string whole(text);
+  const auto colon = text.find(':');
+  BlanketLayer l;
+  if (colon == std::string_view::npos) {
+    if (!angle_only)
+      throw InputError(fmt::format("{} '{}': expected THICKNESS:ANGLE_OF_DRAW, e.g. 12:30 (12 m at 30 degrees from "
+                                   "the vertical)",
+                                   what, whole));
+    l.thickness = kNaN;
+    l.angle_of_draw_deg = parse_angle(text, what, whole);
+  } else {
+    if (text.find(':', colon + 1) != std::string_view::npos)
+      throw InputError(fmt::format("{} '{}': expected one ':' between THICKNESS and ANGLE_OF_DRAW", what, whole));
+    const std::string_view thickness = trim(text.substr(0, colon));
+    if (thickness.empty()) {
+      if (!angle_only)
+        throw InputError(fmt::format("{} '{}': the thickness is missing (expected THICKNESS:ANGLE_OF_DRAW)", what,
+                                     whole));
+      l.thickness = kNaN;
+    } else {
+      l.thickness = parse_length(thickness, fmt::format("{} '{}' (thickness)", what, whole));
+    }
+    l.angle_of_draw_deg = parse_angle(text.substr(colon + 1), what, whole);
+  }
+  check_layer(l, fmt::format("{} '{}'", what, whole));
+  return l;
+}
+
+SuppositionEstimate scenario_supposition(double throat, const std::vector<BlanketLayer>& layers) {
+  if (!(throat > 0.0) || !std::isfinite(throat))
+    throw InputError(fmt::format("--throat {} m: the cavity throat diameter must be a positive length", throat));
+  if (layers.empty())
+    throw InputError("no blanket layer: give at least one --layer THICKNESS:ANGLE_OF_DRAW (cavity upward)");
+  SuppositionEstimate e;
+  e.throat = throat;
+  double d = throat;
+  for (std::size_t i = 0; i < layers.size(); ++i) {
+    const BlanketLayer& l = layers[i];
+    if (!std::isfinite(l.thickness))
+      throw InputError(fmt::format("layer {}: the thickness is missing", i + 1));
+    check_layer(l, fmt::format("layer {}", i + 1));
+    LayerContribution c;
+    c.layer = l;
+    c.widening = 2.0 * l.thickness * std::tan(l.angle_of_draw_deg * kDegree);
+    d += c.widening;
+    c.diameter_above = d;
+    e.total_thickness += l.thickness;
+    e.layers.push_back(c);
+  }
+  e.surface_diameter = d;
+  e.size_class = classify_sinkhole(d);
+  return e;
+}
+
+double implied_angle_of_draw_deg(double surface_diameter, double throat, double thickness) {
+  if (!(thickness > 0.0)) return kNaN;
+  return std::atan((surface_diameter - throat) / (2.0 * thickness)) / kDegree;
+}
+
+DemRunGeometry read_dem_run(const fs::path& dir) {
+  const fs::path resolved = dir / "resolved.toml";
+  const fs::path metrics_file = dir / "analysis" / "metrics.json";
+  if (!fs::is_directory(dir)) throw InputError(fmt::format("--from {}: not a folder", dir.string()));
+  if (!fs::exists(resolved))
+    throw InputError(fmt::format("{}: not found; --from needs a trapdem run folder (its resolved.toml has "
+                                 "spin_up.g_level, the trapdoor width and the fill height)",
+                                 resolved.string()));
+  if (!fs::exists(metrics_file))
+    throw InputError(fmt::format("{}: not found; run `trapdem analyze {}` first (it writes the zone of influence "
+                                 "at the surface and the band angles)",
+                                 metrics_file.string(), dir.string()));
+
+  DemRunGeometry g;
+  Config config = Config::load_file(resolved.string());
+  g.name = config.get_string("name", dir.filename().string());
+  g.g_level = config.get_double("spin_up.g_level", 1.0, "g", Range::at_least(1.0));
+  g.fill_height = config.get_double("pluviation.fill_height", 0.0, "m", Range::non_negative());
+
+  std::ifstream in(metrics_file, std::ios::binary);
+  std::stringstream text;
+  text << in.rdbuf();
+  const Json m = Json::parse(text.str(), metrics_file.string());
+
+  // The trapdoor width the analysis used (metrics), else the configuration's.
+  g.trapdoor_width = number_or_nan(member_or_null(m, "trapdoor"), "width_m");
+  if (!(g.trapdoor_width > 0.0)) g.trapdoor_width = config.require_double("trapdoor.width", "m", Range::positive());
+  g.travel = number_or_nan(member_or_null(m, "trapdoor"), "travel_m");
+
+  const Json& zone = member_or_null(m, "zone_of_influence");
+  g.surface_zone_width = number_or_nan(zone, "surface_width_m");
+  g.settlement_fraction = number_or_nan(zone, "settlement_fraction");
+  if (!(g.surface_zone_width > 0.0))
+    throw InputError(fmt::format("{}: no zone_of_influence.surface_width_m (the analysis found no settlement "
+                                 "zone at the surface); run `trapdem analyze {}` again at a larger trapdoor "
+                                 "displacement",
+                                 metrics_file.string(), dir.string()));
+  const double measured = number_or_nan(zone, "surface_height_m");
+  if (measured > 0.0) {
+    g.soil_height = measured;
+    g.soil_height_source = "the measured surface, metrics.json zone_of_influence.surface_height_m";
+  } else if (g.fill_height > 0.0) {
+    g.soil_height = g.fill_height;
+    g.soil_height_source = "the nominal fill, resolved.toml pluviation.fill_height";
+  } else {
+    throw InputError(fmt::format("{}: no surface height in metrics.json and no pluviation.fill_height in "
+                                 "resolved.toml: the soil height is unknown",
+                                 dir.string()));
+  }
+
+  const Json& bands = member_or_null(m, "shear_bands");
+  g.band_left_deg = number_or_nan(member_or_null(bands, "left"), "angle_deg");
+  g.band_right_deg = number_or_nan(member_or_null(bands, "right"), "angle_deg");
+  return g;
+}
+
+MechanismComparison compare_with_dem(const DemRunGeometry& run, double assumed_angle_deg) {
+  MechanismComparison c;
+  c.run = run;
+  const double n = run.g_level;
+  c.throat = run.trapdoor_width * n;
+  c.thickness = run.soil_height * n;
+  c.dem_surface_diameter = run.surface_zone_width * n;
+  c.dem_size_class = classify_sinkhole(c.dem_surface_diameter);
+  c.angle_from_surface_deg = implied_angle_of_draw_deg(c.dem_surface_diameter, c.throat, c.thickness);
+  const bool l = std::isfinite(run.band_left_deg), r = std::isfinite(run.band_right_deg);
+  c.angle_from_bands_deg = l && r ? 0.5 * (run.band_left_deg + run.band_right_deg)
+                           : l    ? run.band_left_deg
+                           : r    ? run.band_right_deg
+                                  : kNaN;
+  c.assumed_angle_deg = assumed_angle_deg;
+  c.supposition = scenario_supposition(c.throat, {BlanketLayer{c.thickness, assumed_angle_deg}});
+  c.ratio = c.supposition.surface_diameter / c.dem_surface_diameter;
+  return c;
+}
+
+Json to_json(const SuppositionEstimate& e) {
+  Json j = Json::object();
+  j.set("method", "scenario supposition (Buttrick & Van Schalkwyk 1995; SANS 1936): D_s = D_throat + 2 sum t_i tan(alpha_i)");
+  j.set("throat_m", e.throat);
+  Json layers = Json::array();
+  for (const auto& c : e.layers) {
+    Json l = Json::object();
+    l.set("thickness_m", c.layer.thickness);
+    l.set("angle_of_draw_deg", c.layer.angle_of_draw_deg);
+    l.set("widening_m", c.widening);
+    l.set("diameter_at_top_m", c.diameter_above);
+    layers.push_back(l);
+  }
+  j.set("layers", layers);
+  j.set("depth_to_throat_m", e.total_thickness);
+  j.set("surface_diameter_m", e.surface_diameter);
+  j.set("size_class", size_class_name(e.size_class));
+  j.set("size_class_range", size_class_range(e.size_class));
+  return j;
+}
+
+Json to_json(const MechanismComparison& c) {
+  Json j = Json::object();
+  Json model = Json::object();
+  model.set("case", c.run.name);
+  model.set("g_level", c.run.g_level);
+  model.set("trapdoor_width_m", c.run.trapdoor_width);
+  model.set("soil_height_m", c.run.soil_height);
+  model.set("soil_height_source", c.run.soil_height_source);
+  model.set("fill_height_m", c.run.fill_height);
+  model.set("trapdoor_travel_m", c.run.travel);
+  model.set("settlement_fraction", c.run.settlement_fraction);
+  model.set("surface_zone_width_m", c.run.surface_zone_width);
+  model.set("band_left_angle_deg", c.run.band_left_deg);
+  model.set("band_right_angle_deg", c.run.band_right_deg);
+  j.set("model", model);
+
+  Json dem = Json::object();
+  dem.set("scaling", "centrifuge similitude: prototype length = model length x g_level");
+  dem.set("throat_m", c.throat);
+  dem.set("thickness_m", c.thickness);
+  dem.set("surface_diameter_m", c.dem_surface_diameter);
+  dem.set("size_class", size_class_name(c.dem_size_class));
+  dem.set("angle_of_draw_from_surface_zone_deg", c.angle_from_surface_deg);
+  dem.set("angle_of_draw_from_bands_deg", c.angle_from_bands_deg);
+  j.set("mechanism", dem);
+
+  Json sup = to_json(c.supposition);
+  sup.set("assumed_angle_of_draw_deg", c.assumed_angle_deg);
+  j.set("supposition", sup);
+  j.set("ratio_supposition_over_mechanism", c.ratio);
+  return j;
+}
+
+}  // namespace trapdem
