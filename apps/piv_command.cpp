@@ -272,7 +272,7 @@ int run_render_command(const RenderOptions& o) {
   for (std::size_t k = 0; k < snapshots.size(); ++k) {
     const cv::Mat img = render_front_view(snapshots[k], view, cs);
     const fs::path path =
-        out / fmt::format("{:03d}_{:g}mm.png", k, std::round(snapshots[k].trapdoor_displacement * 1e6) / 1e3);
+        out / fmt::format("{:03d}_{:g}mm.png", k, std::round(snapshots[k].trapdoor_displacement * 1e4) / 10.0 + 0.0);
     write_atomically(path, [&](const fs::path& tmp) {
       std::vector<uchar> buf;
       if (!cv::imencode(".png", img, buf)) throw FileError(path.string() + ": cannot encode PNG");
@@ -303,13 +303,22 @@ int run_render_command(const RenderOptions& o) {
     s.subset_size = o.subset > 0 ? o.subset : std::max(16, static_cast<int>(std::round(3.0 * dmean / 2.0)) * 2);
     s.step = s.subset_size / 2;
     s.threads = o.threads;
-    std::vector<fs::path> paths(files.begin(), files.end());
+    // Reference: the last snapshot before the trapdoor moves (the analysis' 0 mm).
+    std::size_t first = 0;
+    while (first + 1 < snapshots.size() && snapshots[first + 1].trapdoor_displacement <= 1e-6) ++first;
+    std::vector<fs::path> paths(files.begin() + static_cast<std::ptrdiff_t>(first), files.end());
+    if (paths.size() < 2) {
+      fmt::print("check: no snapshot after the trapdoor started to move\n");
+      return 0;
+    }
     const PivResult r = run_piv(paths, s);
-    fmt::print("check: PIV ({} px subsets) against the front-layer particles' mean displacement per subset\n",
-               s.subset_size);
+    fmt::print("check: PIV ({} px subsets, step {} px) from {} against the front-layer particles' mean displacement "
+               "per subset\n",
+               s.subset_size, s.step, paths.front().filename().string());
     for (std::size_t k = 1; k < r.image_count(); ++k) {
-      const CameraAgreement a = compare_with_particles(r, k, snapshots[0], snapshots[k], view, cs);
-      const double delta_mm = snapshots[k].trapdoor_displacement * 1e3;
+      const CameraAgreement a =
+          compare_with_particles(r, k, snapshots[first], snapshots[first + k], view, cs);
+      const double delta_mm = snapshots[first + k].trapdoor_displacement * 1e3;
       fmt::print("  {:g} mm: {} subsets, RMS vertical error {:.3f} px = {:.3f} mm = {:.2f} % of the trapdoor "
                  "displacement (bias {:+.3f} px), RMS vector error {:.3f} px, largest displacement {:.1f} px\n",
                  delta_mm, a.subsets, a.rms_vertical_error_px, a.rms_vertical_error_mm,
