@@ -5,6 +5,7 @@
 #include <fmt/format.h>
 
 #include "analyze_command.hpp"
+#include "compare_command.hpp"
 #include "dem/errors.hpp"
 #include "io/file_error.hpp"
 #include "piv_command.hpp"
@@ -114,6 +115,21 @@ int main(int argc, char** argv) {
   render_cmd->add_option("--subset", render.subset, "--check subset size, px (default about 3 diameters)");
   render_cmd->add_option("--threads", render.threads, "OpenMP threads for --check")->check(CLI::NonNegativeNumber);
 
+  trapdem::app::CompareOptions compare;
+  auto* cmp_cmd = app.add_subcommand("compare", "DEM against PIV: vertical displacement on one grid, RMS error, overlay figure");
+  cmp_cmd->add_option("dem_dir", compare.dem_dir, "DEM run folder (resolved.toml, snapshots.h5)")->required();
+  cmp_cmd->add_option("piv_dir", compare.piv_dir, "PIV output folder (piv.h5 with model coordinates)")->required();
+  cmp_cmd->add_option("--at", compare.at, "Trapdoor displacement to compare, e.g. 10mm")->required();
+  cmp_cmd->add_option("--grid", compare.grid, "Spacing of the common grid (default 2mm)");
+  cmp_cmd->add_option("--image", compare.image, "PIV image (1-based; default: the one rendered from the DEM snapshot)");
+  cmp_cmd->add_option("--reference-image", compare.reference_image,
+                      "PIV image at the start of lowering (default: rendered from the DEM reference, else 1)");
+  cmp_cmd->add_option("--piv-trapdoor", compare.piv_trapdoor,
+                      "Trapdoor centre X,Z in the PIV model coordinates, e.g. 125mm,0mm (default: the DEM box's)");
+  cmp_cmd->add_option("--out", compare.out, "Figure (default DEM_DIR/analysis/compare_<at>mm.png)");
+  cmp_cmd->add_flag("--no-figure", compare.no_figure, "Numbers only");
+  cmp_cmd->add_flag("--json", compare.json, "JSON on stdout instead of the text");
+
   CLI11_PARSE(app, argc, argv);
   try {
     if (run_cmd->parsed()) return trapdem::app::run_experiment(run);
@@ -124,6 +140,7 @@ int main(int argc, char** argv) {
     if (piv_cmd->parsed()) return trapdem::app::run_piv_command(piv);
     if (synth_cmd->parsed()) return trapdem::app::run_synth_command(synth);
     if (render_cmd->parsed()) return trapdem::app::run_render_command(render);
+    if (cmp_cmd->parsed()) return trapdem::app::run_compare(compare);
     if (sink->parsed()) return trapdem::app::run_sinkhole(sinkhole);
   } catch (const trapdem::InputError& e) {
     fmt::print(stderr, "trapdem: input error: {}\n", e.what());
