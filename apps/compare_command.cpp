@@ -47,7 +47,7 @@ CompareResult compare_directories(const CompareOptions& o) {
     throw InputError(fmt::format("{}: not found (run `trapdem run` first)", snapshots.string()));
   }
   fs::path piv_h5 = o.piv_dir;
-  if (fs::is_directory(piv_h5)) piv_h5 /= "piv.h5";
+  if (piv_h5.extension() != ".h5") piv_h5 /= "piv.h5";  // a PIV output folder
   const double spacing = parse_length(o.grid, "--grid");
   if (!(spacing > 0.0)) throw InputError("--grid must be positive");
 
