@@ -366,7 +366,7 @@ fs::path write_quality_figure(const fs::path& dir, const PivFigureInput& in) {
   const plot::ColourMap map(plot::ColourMapKind::viridis);
   const double lo = 0.6, hi = 1.0;
   const double half = 0.5 * r.grid.step;
-  std::size_t flagged = 0, poor = 0;
+  std::size_t flagged = 0, poor = 0, poor_lost = 0;
   cairo_save(cr);
   f.frame.clip(cr);
   for (std::size_t i = 0; i < r.grid.size(); ++i) {
@@ -376,8 +376,12 @@ fs::path write_quality_figure(const fs::path& dir, const PivFigureInput& in) {
     cairo_matrix_transform_point(&f.pixel_to_device, &x0, &y0);
     cairo_matrix_transform_point(&f.pixel_to_device, &x1, &y1);
     const double l = std::min(x0, x1), t = std::min(y0, y1), w = std::abs(x1 - x0), h = std::abs(y1 - y0);
-    if (m.status == SubsetStatus::low_texture) {
+    // Poor texture in image 1 (the figure's photograph): grey, also when the subset was lost at a
+    // reference update since (poorly textured subsets carry no trusted position into a new reference).
+    const bool lost_poor = m.status == SubsetStatus::lost && r.image[0].subset[i].status == SubsetStatus::low_texture;
+    if (m.status == SubsetStatus::low_texture || lost_poor) {
       ++poor;
+      poor_lost += lost_poor;
       cairo_set_source_rgba(cr, 0.55, 0.55, 0.55, 0.75);
       cairo_rectangle(cr, l, t, w, h);
       cairo_fill(cr);
@@ -406,9 +410,9 @@ fs::path write_quality_figure(const fs::path& dir, const PivFigureInput& in) {
   cb.label = "ZNCC (-)";
   plot::draw_colour_bar(cr, colour_bar_rect(f), map, lo, hi, cb);
   draw_titles(cr, fmt::format("{}: correlation quality, image {}", in.title, k + 1),
-              fmt::format("ZNCC per subset; grey: too little texture ({}); red x: other flagged subsets "
-                          "(low correlation, not converged, left image, lost: {})",
-                          poor, flagged));
+              fmt::format("ZNCC per subset; grey: too little texture in image 1 ({}; {} of them lost since); red x: "
+                          "other flagged (low correlation, not converged, left image, lost: {})",
+                          poor, poor_lost, flagged));
   const fs::path path = dir / "correlation_quality.png";
   canvas.write_png(path);
   return path;
