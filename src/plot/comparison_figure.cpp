@@ -17,21 +17,6 @@ const Rgb dem_colour{0.10, 0.25, 0.60};
 const Rgb piv_colour{0.90, 0.45, 0.05};
 const Rgb trapdoor_colour{0.80, 0.10, 0.10};
 
-void draw_title_lines(cairo_t* cr, double x, double y, const std::string& title, const std::string& subtitle) {
-  const double size = 20.0;
-  draw_text(cr, title, x, y, TextStyle{.size = size, .bold = true, .v = VAlign::top});
-  double line_y = y + 1.45 * size;
-  std::size_t start = 0;
-  while (start < subtitle.size()) {
-    std::size_t end = subtitle.find('\n', start);
-    if (end == std::string::npos) end = subtitle.size();
-    draw_text(cr, subtitle.substr(start, end - start), x, line_y,
-              TextStyle{.size = 0.75 * size, .colour = {0.3, 0.3, 0.3}, .v = VAlign::top});
-    line_y += 1.2 * size;
-    start = end + 1;
-  }
-}
-
 // Largest settlement (-w) of either field, m.
 double largest_settlement(const ComparisonFigure& f) {
   double s = 0.0;
@@ -164,7 +149,7 @@ void write_comparison_png(const std::filesystem::path& path, const ComparisonFig
   cairo_fill(cr);
   draw_text(cr, "compared area", lx + 72, ly + 73, ts);
 
-  draw_title_lines(cr, left, 18.0, fig.title, fig.subtitle);
+  draw_title(cr, left, 18.0, fig.title, fig.subtitle, 20.0);
   canvas.write_png(path);
 }
 

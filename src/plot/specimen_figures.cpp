@@ -77,21 +77,6 @@ double map_height_for_width(const AnalysisResult& r, double width) {
   return width * z.span() / x.span();
 }
 
-void draw_title(cairo_t* cr, double x, double y, const std::string& title, const std::string& subtitle, double size) {
-  draw_text(cr, title, x, y, TextStyle{.size = size, .bold = true, .v = VAlign::top});
-  // The subtitle's lines are separated by '\n'.
-  double line_y = y + 1.45 * size;
-  std::size_t start = 0;
-  while (start < subtitle.size()) {
-    std::size_t end = subtitle.find('\n', start);
-    if (end == std::string::npos) end = subtitle.size();
-    draw_text(cr, subtitle.substr(start, end - start), x, line_y,
-              TextStyle{.size = 0.75 * size, .colour = {0.3, 0.3, 0.3}, .v = VAlign::top});
-    line_y += 1.2 * size;
-    start = end + 1;
-  }
-}
-
 std::string displacement_text(const AnalysisResult& r) {
   return fmt::format("trapdoor displacement δ = {} (δ/B = {:.2f})", format_mm(r.trapdoor_travel()),
                      r.trapdoor_travel() / r.geometry.trapdoor.width);

@@ -74,4 +74,19 @@ Rect draw_text_on_box(cairo_t* cr, const std::string& text, double x, double y, 
   return box;
 }
 
+void draw_title(cairo_t* cr, double x, double y, const std::string& title, const std::string& subtitle, double size) {
+  draw_text(cr, title, x, y, TextStyle{.size = size, .bold = true, .v = VAlign::top});
+  // The subtitle's lines are separated by '\n'.
+  double line_y = y + 1.45 * size;
+  std::size_t start = 0;
+  while (start < subtitle.size()) {
+    std::size_t end = subtitle.find('\n', start);
+    if (end == std::string::npos) end = subtitle.size();
+    draw_text(cr, subtitle.substr(start, end - start), x, line_y,
+              TextStyle{.size = 0.75 * size, .colour = {0.3, 0.3, 0.3}, .v = VAlign::top});
+    line_y += 1.2 * size;
+    start = end + 1;
+  }
+}
+
 }  // namespace trapdem::plot

@@ -31,4 +31,8 @@ Rect draw_text(cairo_t* cr, const std::string& text, double x, double y, const T
 Rect draw_text_on_box(cairo_t* cr, const std::string& text, double x, double y, const TextStyle& style,
                       Rgb background = {1.0, 1.0, 1.0}, double padding = 2.0);
 
+// A figure's title (bold) with a grey subtitle below it whose lines are separated by '\n';
+// (x, y) is the title's top left, `size` the title's font size (px).
+void draw_title(cairo_t* cr, double x, double y, const std::string& title, const std::string& subtitle, double size);
+
 }  // namespace trapdem::plot
