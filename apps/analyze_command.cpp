@@ -11,6 +11,7 @@
 #include "experiment/experiment_config.hpp"
 #include "experiment/ground_reaction.hpp"
 #include "io/config.hpp"
+#include "io/text_file.hpp"
 #include "plot/line_chart.hpp"
 #include "plot/specimen_figures.hpp"
 
@@ -89,16 +90,8 @@ AnalysisResult analyze_directory(const AnalyzeOptions& o) {
 
 namespace {
 
-std::string read_text(const fs::path& path) {
-  std::ifstream file(path, std::ios::binary);
-  if (!file) throw FileError(path.string() + ": cannot open");
-  std::ostringstream text;
-  text << file.rdbuf();
-  return text.str();
-}
-
 void write_ground_reaction_figure(const fs::path& csv, const fs::path& png, const SpecimenGeometry& g) {
-  const auto rows = parse_ground_reaction_csv(read_text(csv), csv.string());
+  const auto rows = parse_ground_reaction_csv(read_text_file(csv), csv.string());
   plot::LineChart chart;
   chart.title = fmt::format("{}: ground reaction curve", g.name);
   const double geostatic = rows.empty() ? 0.0 : rows.front().geostatic_stress;
@@ -133,8 +126,8 @@ void write_ground_reaction_figure(const fs::path& csv, const fs::path& png, cons
 
 }  // namespace
 
-int run_analyze(const AnalyzeOptions& o) {
-  const AnalysisResult r = analyze_directory(o);
+AnalysisResult analyze_and_write(const AnalyzeOptions& o, std::vector<fs::path>* written_files) {
+  AnalysisResult r = analyze_directory(o);
   const fs::path out = o.out.empty() ? fs::path(o.dir) / "analysis" : fs::path(o.out);
   write_fields(out, r);
   write_metrics(out, r);
@@ -156,6 +149,14 @@ int run_analyze(const AnalyzeOptions& o) {
       written.push_back(out / "ground_reaction.png");
     }
   }
+  if (written_files) *written_files = written;
+  return r;
+}
+
+int run_analyze(const AnalyzeOptions& o) {
+  std::vector<fs::path> written;
+  const AnalysisResult r = analyze_and_write(o, &written);
+  const fs::path out = o.out.empty() ? fs::path(o.dir) / "analysis" : fs::path(o.out);
   if (!o.quiet) {
     std::fputs(metrics_table(r).c_str(), stdout);
     fmt::print("  written: ");

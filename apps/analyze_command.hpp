@@ -34,6 +34,10 @@ SpecimenGeometry load_specimen_geometry(const std::filesystem::path& config_file
 // Runs the analysis of one folder (no output written).
 AnalysisResult analyze_directory(const AnalyzeOptions& options);
 
+// The analysis with its outputs (fields, metrics.json, figures unless no_figures) written to
+// options.out (default DIR/analysis); the files written go to `written_files` if given.
+AnalysisResult analyze_and_write(const AnalyzeOptions& options, std::vector<std::filesystem::path>* written_files = nullptr);
+
 // The whole command: analysis, outputs, figures, table. Returns the exit code.
 int run_analyze(const AnalyzeOptions& options);
 

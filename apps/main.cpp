@@ -12,6 +12,7 @@
 #include "run_command.hpp"
 #include "showcase.hpp"
 #include "sinkhole_command.hpp"
+#include "study_command.hpp"
 
 int main(int argc, char** argv) {
   CLI::App app{"trapdem: trapdoor experiments with the discrete element method"};
@@ -130,6 +131,17 @@ int main(int argc, char** argv) {
   cmp_cmd->add_flag("--no-figure", compare.no_figure, "Numbers only");
   cmp_cmd->add_flag("--json", compare.json, "JSON on stdout instead of the text");
 
+  trapdem::app::StudyOptions study;
+  auto* study_cmd = app.add_subcommand("study", "Run a study's cases (resumable) and write DIR/report/index.html");
+  study_cmd->add_option("file", study.file, "Study file (TOML; see studies/ and docs/study.md)")
+      ->required()->check(CLI::ExistingFile);
+  study_cmd->add_option("--out", study.out, "Study folder (default trapdem-out/<study>-<scale>)");
+  study_cmd->add_option("--scale", study.scale, "One of the study's scales, e.g. demo or paper (default: its default_scale)");
+  study_cmd->add_option("--threads", study.threads, "OpenMP threads per run (default: all cores)")
+      ->check(CLI::NonNegativeNumber);
+  study_cmd->add_flag("--quiet", study.quiet, "Runs' progress lines only in their run.log");
+  study_cmd->add_flag("--report-only", study.report_only, "Run nothing: report on the finished cases");
+
   CLI11_PARSE(app, argc, argv);
   try {
     if (run_cmd->parsed()) return trapdem::app::run_experiment(run);
@@ -142,6 +154,7 @@ int main(int argc, char** argv) {
     if (render_cmd->parsed()) return trapdem::app::run_render_command(render);
     if (cmp_cmd->parsed()) return trapdem::app::run_compare(compare);
     if (sink->parsed()) return trapdem::app::run_sinkhole(sinkhole);
+    if (study_cmd->parsed()) return trapdem::app::run_study(study);
   } catch (const trapdem::InputError& e) {
     fmt::print(stderr, "trapdem: input error: {}\n", e.what());
     return 2;

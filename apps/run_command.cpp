@@ -11,11 +11,13 @@
 
 #include <fmt/format.h>
 
+#include "analysis/json.hpp"
 #include "dem/errors.hpp"
 #include "experiment/trapdoor_experiment.hpp"
 #include "io/atomic_file.hpp"
 #include "io/checkpoint.hpp"
 #include "io/config.hpp"
+#include "io/text_file.hpp"
 #include "io/snapshot.hpp"
 
 namespace fs = std::filesystem;
@@ -137,6 +139,36 @@ void drop_snapshots_after(const fs::path& h5, std::int64_t step) {
   write_snapshot_xdmf(h5);
 }
 
+// run.json: the run's work so far, summed over its segments (a first run and each --resume that
+// ended, finished or stopped); a segment ended by a kill is not counted. Studies read it.
+void record_segment(const fs::path& out, bool complete, const std::string& stage, double seconds, std::int64_t steps,
+                    double particle_steps, std::size_t particles) {
+  const fs::path file = out / "run.json";
+  double total_seconds = seconds, total_particle_steps = particle_steps;
+  double total_steps = double(steps), segments = 1.0;
+  if (fs::exists(file)) {
+    try {
+      const Json previous = Json::parse(read_text_file(file), file.string());
+      total_seconds += previous["wall_seconds"].as_number();
+      total_steps += previous["steps"].as_number();
+      total_particle_steps += previous["particle_steps"].as_number();
+      segments += previous["segments"].as_number();
+    } catch (const InputError&) {
+      // An unreadable record (written by another version) restarts the count: the run's results stand.
+    }
+  }
+  Json j = Json::object();
+  j.set("complete", complete);
+  j.set("stage", stage);
+  j.set("segments", segments);
+  j.set("wall_seconds", total_seconds);
+  j.set("steps", total_steps);
+  j.set("particle_steps", total_particle_steps);
+  j.set("particles", particles);
+  j.set("particle_steps_per_second", total_seconds > 0.0 ? total_particle_steps / total_seconds : 0.0);
+  write_text_atomically(file, j.dump() + "\n");
+}
+
 }  // namespace
 
 fs::path preset_directory() {
@@ -255,6 +287,8 @@ int run_experiment(const RunOptions& o) {
     std::map<std::string, std::string> state = experiment.state();
     recorder.checkpoint(state);  // the final state, so a later analysis or extension can start from it
   }
+  record_segment(out, complete, stage_name(experiment.stage()), seconds, sim.step_count() - start_steps,
+                 experiment.particle_steps_run(), sim.particles().size());
   return complete ? 0 : 130;
 }
 

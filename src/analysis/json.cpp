@@ -231,4 +231,16 @@ class Parser {
 
 Json Json::parse(std::string_view text, const std::string& source) { return Parser(text, source).document(); }
 
+double json_number_or_nan(const Json& object, const std::string& key) {
+  if (object.type() != Json::Type::object || !object.contains(key)) return std::numeric_limits<double>::quiet_NaN();
+  const Json& v = object[key];
+  return v.type() == Json::Type::number ? v.as_number() : std::numeric_limits<double>::quiet_NaN();
+}
+
+const Json& json_member_or_null(const Json& object, const std::string& key) {
+  static const Json null;
+  if (object.type() != Json::Type::object || !object.contains(key)) return null;
+  return object[key];
+}
+
 }  // namespace trapdem

@@ -62,4 +62,9 @@ class Json {
   std::vector<std::pair<std::string, Json>> members_;
 };
 
+// Reading metrics documents that may lack a value: a member's number, NaN if `object` is not an
+// object, lacks `key`, or holds a non-number (null) there; a member, or null.
+double json_number_or_nan(const Json& object, const std::string& key);
+const Json& json_member_or_null(const Json& object, const std::string& key);
+
 }  // namespace trapdem

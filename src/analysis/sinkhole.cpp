@@ -10,6 +10,7 @@
 #include "analysis/length_text.hpp"
 #include "dem/errors.hpp"
 #include "io/config.hpp"
+#include "io/text_file.hpp"
 
 namespace trapdem {
 
@@ -53,17 +54,6 @@ void check_layer(const BlanketLayer& l, std::string_view what) {
                                  what, l.angle_of_draw_deg));
 }
 
-double number_or_nan(const Json& object, const std::string& key) {
-  if (object.type() != Json::Type::object || !object.contains(key)) return kNaN;
-  const Json& v = object[key];
-  return v.type() == Json::Type::number ? v.as_number() : kNaN;
-}
-
-const Json& member_or_null(const Json& object, const std::string& key) {
-  static const Json null;
-  if (object.type() != Json::Type::object || !object.contains(key)) return null;
-  return object[key];
-}
 
 }  // namespace
 
@@ -173,25 +163,22 @@ DemRunGeometry read_dem_run(const fs::path& dir) {
   g.g_level = config.get_double("spin_up.g_level", 1.0, "g", Range::at_least(1.0));
   g.fill_height = config.get_double("pluviation.fill_height", 0.0, "m", Range::non_negative());
 
-  std::ifstream in(metrics_file, std::ios::binary);
-  std::stringstream text;
-  text << in.rdbuf();
-  const Json m = Json::parse(text.str(), metrics_file.string());
+  const Json m = Json::parse(read_text_file(metrics_file), metrics_file.string());
 
   // The trapdoor width the analysis used (metrics), else the configuration's.
-  g.trapdoor_width = number_or_nan(member_or_null(m, "trapdoor"), "width_m");
+  g.trapdoor_width = json_number_or_nan(json_member_or_null(m, "trapdoor"), "width_m");
   if (!(g.trapdoor_width > 0.0)) g.trapdoor_width = config.require_double("trapdoor.width", "m", Range::positive());
-  g.travel = number_or_nan(member_or_null(m, "trapdoor"), "travel_m");
+  g.travel = json_number_or_nan(json_member_or_null(m, "trapdoor"), "travel_m");
 
-  const Json& zone = member_or_null(m, "zone_of_influence");
-  g.surface_zone_width = number_or_nan(zone, "surface_width_m");
-  g.settlement_fraction = number_or_nan(zone, "settlement_fraction");
+  const Json& zone = json_member_or_null(m, "zone_of_influence");
+  g.surface_zone_width = json_number_or_nan(zone, "surface_width_m");
+  g.settlement_fraction = json_number_or_nan(zone, "settlement_fraction");
   if (!(g.surface_zone_width > 0.0))
     throw InputError(fmt::format("{}: no zone_of_influence.surface_width_m (the analysis found no settlement "
                                  "zone at the surface); run `trapdem analyze {}` again at a larger trapdoor "
                                  "displacement",
                                  metrics_file.string(), dir.string()));
-  const double measured = number_or_nan(zone, "surface_height_m");
+  const double measured = json_number_or_nan(zone, "surface_height_m");
   if (measured > 0.0) {
     g.soil_height = measured;
     g.soil_height_source = "the measured surface, metrics.json zone_of_influence.surface_height_m";
@@ -204,9 +191,9 @@ DemRunGeometry read_dem_run(const fs::path& dir) {
                                  dir.string()));
   }
 
-  const Json& bands = member_or_null(m, "shear_bands");
-  g.band_left_deg = number_or_nan(member_or_null(bands, "left"), "angle_deg");
-  g.band_right_deg = number_or_nan(member_or_null(bands, "right"), "angle_deg");
+  const Json& bands = json_member_or_null(m, "shear_bands");
+  g.band_left_deg = json_number_or_nan(json_member_or_null(bands, "left"), "angle_deg");
+  g.band_right_deg = json_number_or_nan(json_member_or_null(bands, "right"), "angle_deg");
   return g;
 }
 

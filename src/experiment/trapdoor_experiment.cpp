@@ -141,6 +141,7 @@ bool TrapdoorExperiment::run(ExperimentObserver& observer) {
     }
     if (observer.checkpoint_due()) observer.checkpoint(state());
     advance(observer);
+    particle_steps_run_ += double(sim_->particles().size());
     if (sim_->step_count() % 200 == 0) report(observer, false);
   }
   report(observer, true);

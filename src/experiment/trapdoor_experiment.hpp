@@ -49,6 +49,9 @@ class TrapdoorExperiment {
 
   Simulation& simulation() { return *sim_; }
   const Simulation& simulation() const { return *sim_; }
+  // Particle-steps (particles in the box, summed over steps) taken by run() calls of this object:
+  // the work behind a run's particle-steps per second while the count grows during pluviation.
+  double particle_steps_run() const { return particle_steps_run_; }
   const ExperimentConfig& config() const { return config_; }
   Stage stage() const { return stage_; }
   double trapdoor_displacement() const;  // m, downward positive
@@ -87,6 +90,7 @@ class TrapdoorExperiment {
   // Wall-clock bookkeeping for progress lines (not part of the state).
   double last_report_clock_ = -1e300;
   double clock_start_ = 0.0;
+  double particle_steps_run_ = 0.0;
   std::int64_t steps_at_clock_start_ = 0;
   double fraction_at_clock_start_ = 0.0;
   Stage stage_at_clock_start_ = Stage::pluviation;

@@ -5,6 +5,7 @@
 #include <cstring>
 #include <cmath>
 #include <fstream>
+#include <limits>
 #include <map>
 #include <set>
 #include <sstream>
@@ -481,9 +482,37 @@ std::vector<std::string> Config::keys(std::string_view table_key) const {
     if (!node->is_table()) wrong(*state_, k, *node, "a table");
     table = node->as_table();
   }
+  // toml++ keeps a table sorted by name: restore the document's order from the source positions
+  // (nodes made by overrides have none, line 0, and go last in name order).
+  std::vector<std::pair<toml::source_position, std::string>> entries;
+  const std::string prefix = k.empty() ? "" : k + ".";
+  for (const auto& [name, node] : *table) {
+    toml::source_position at = name.source().begin;
+    if (!at) at = node.source().begin;
+    if (!at || state_->override_origin.count(prefix + std::string(name.str())))
+      at = {std::numeric_limits<toml::source_index>::max(), 0};
+    entries.emplace_back(at, std::string(name.str()));
+  }
+  std::stable_sort(entries.begin(), entries.end(), [](const auto& a, const auto& b) {
+    return a.first.line != b.first.line ? a.first.line < b.first.line : a.first.column < b.first.column;
+  });
   std::vector<std::string> out;
-  for (const auto& [name, node] : *table) out.emplace_back(name.str());
+  for (auto& e : entries) out.push_back(std::move(e.second));
   return out;
+}
+
+bool Config::is_table(std::string_view key) const {
+  const toml::node* node = find(*state_, full_key(key));
+  return node && node->is_table();
+}
+
+std::string Config::require_value_text(std::string_view key) {
+  const std::string k = full_key(key);
+  state_->used.insert(k);
+  const toml::node* node = find(*state_, k);
+  if (!node) missing(*state_, k, "a value");
+  if (node->is_table()) wrong(*state_, k, *node, "a value (number, string, boolean or array), not a table");
+  return format_value(*node);
 }
 
 InputError Config::error(std::string_view key, std::string_view expected) const {

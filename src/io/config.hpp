@@ -86,8 +86,14 @@ class Config {
 
   Config get_table(std::string_view key);
   bool has(std::string_view key) const;
-  // The names of a table's entries as written (for tables keyed by user names, e.g. materials).
+  bool is_table(std::string_view key) const;   // present and a table
+  // The names of a table's entries as written, in the order the document writes them (for tables
+  // keyed by user names, e.g. materials or a study's cases); entries added by overrides come last.
   std::vector<std::string> keys(std::string_view table_key = {}) const;
+  // The value of a key that must be present and not a table, as TOML text ("0.5", "\"demo\"",
+  // "[0.0, 0.01]"), marked as used: to carry a value from one document into another as an override
+  // (a study's per-case settings). Throws InputError if missing or a table.
+  std::string require_value_text(std::string_view key);
 
   // An InputError for a rule that spans several keys (trapdoor wider than the box, time step above
   // the critical one): "<file>:<line>:<col>: <full key> = <value>: expected <expected>".

@@ -41,4 +41,9 @@ Rgb ColourMap::of(double value, double lo, double hi) const {
   return at((value - lo) / (hi - lo));
 }
 
+Rgb series_colour(std::size_t k) {
+  static constexpr unsigned kOkabeIto[] = {0x0072B2, 0xD55E00, 0x009E73, 0xCC79A7, 0xE69F00, 0x56B4E9, 0x000000, 0xF0E442};
+  return rgb_hex(kOkabeIto[k % 8]);
+}
+
 }  // namespace trapdem::plot

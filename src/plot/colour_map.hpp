@@ -2,6 +2,7 @@
 // Colour maps for the figures: a perceptually uniform sequential map (viridis, for magnitudes
 // such as the maximum shear strain) and a diverging map (blue - white - red, for signed fields
 // such as the vertical displacement, white at zero).
+#include <cstddef>
 #include <string>
 
 namespace trapdem::plot {
@@ -27,5 +28,9 @@ class ColourMap {
 
 // 0xRRGGBB as a colour.
 Rgb rgb_hex(unsigned hex);
+
+// The k-th colour for one of several series (cases on one chart): Okabe & Ito's palette, told apart
+// by colour-blind readers too; it repeats after eight.
+Rgb series_colour(std::size_t k);
 
 }  // namespace trapdem::plot

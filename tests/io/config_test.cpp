@@ -60,7 +60,10 @@ TEST(Config, TypedLookUpsWithDefaults) {
   EXPECT_EQ(c.get_table("material").get_double("restitution", 0.5, "", Range::unit_open_closed()), 0.9);
   EXPECT_TRUE(c.has("box.width"));
   EXPECT_FALSE(c.has("box.nothing"));
-  EXPECT_EQ(c.keys("box"), (std::vector<std::string>{"depth", "height", "width"}));
+  EXPECT_EQ(c.keys("box"), (std::vector<std::string>{"width", "depth", "height"}));  // as the file writes them
+  c.apply_override("box.angle=0.5");  // an override's new key has no place in the file: it goes last
+  EXPECT_EQ(c.keys("box"), (std::vector<std::string>{"width", "depth", "height", "angle"}));
+  c.get_double("box.angle", 0.0);
   EXPECT_NO_THROW(c.report_unused());
 }
 

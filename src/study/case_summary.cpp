@@ -1,0 +1,115 @@
+#include "study/case_summary.hpp"
+
+#include <cmath>
+
+#include "dem/errors.hpp"
+#include "io/text_file.hpp"
+
+namespace trapdem {
+
+namespace {
+
+// The mean of the finite values among a and b; NaN if neither is.
+double mean_of_found(double a, double b) {
+  if (std::isfinite(a) && std::isfinite(b)) return 0.5 * (a + b);
+  if (std::isfinite(a)) return a;
+  return b;
+}
+
+Json number(double x) { return std::isfinite(x) ? Json(x) : Json(); }
+
+}  // namespace
+
+void read_mechanism_metrics(const Json& m, CaseSummary& s) {
+  const Json& trapdoor = json_member_or_null(m, "trapdoor");
+  s.trapdoor_width = json_number_or_nan(trapdoor, "width_m");
+  s.travel = json_number_or_nan(trapdoor, "travel_m");
+  s.mean_diameter = json_number_or_nan(json_member_or_null(m, "particles"), "mean_diameter_m");
+
+  const Json& bands = json_member_or_null(m, "shear_bands");
+  const Json& left = json_member_or_null(bands, "left");
+  const Json& right = json_member_or_null(bands, "right");
+  s.band_angle_left_deg = json_number_or_nan(left, "angle_deg");
+  s.band_angle_right_deg = json_number_or_nan(right, "angle_deg");
+  s.band_angle_deg = mean_of_found(s.band_angle_left_deg, s.band_angle_right_deg);
+  s.band_height = mean_of_found(json_number_or_nan(left, "height_reached_m"), json_number_or_nan(right, "height_reached_m"));
+  s.band_width_d = mean_of_found(json_number_or_nan(left, "width_diameters"), json_number_or_nan(right, "width_diameters"));
+
+  const Json& zone = json_member_or_null(m, "zone_of_influence");
+  s.zone_surface = json_number_or_nan(zone, "surface_width_m");
+  s.zone_mid_height = json_number_or_nan(zone, "mid_height_width_m");
+  s.shape_ratio = json_number_or_nan(zone, "shape_ratio");
+  const Json& shape = json_member_or_null(zone, "shape");
+  s.shape = shape.type() == Json::Type::string ? shape.as_string() : "";
+}
+
+void read_ground_reaction(const std::vector<GroundReactionRow>& rows, double trapdoor_width, CaseSummary& s) {
+  s.grc_x_over_b.clear();
+  s.grc_trapdoor_ratio.clear();
+  for (const GroundReactionRow& row : rows) {
+    s.grc_x_over_b.push_back(row.trapdoor_displacement / trapdoor_width);
+    s.grc_trapdoor_ratio.push_back(row.trapdoor.ratio);
+    if (!(row.trapdoor.ratio >= s.min_load_ratio)) {  // also takes the first over NaN
+      s.min_load_ratio = row.trapdoor.ratio;
+      s.min_load_at_over_b = row.trapdoor_displacement / trapdoor_width;
+    }
+  }
+  if (!rows.empty()) s.final_load_ratio = rows.back().trapdoor.ratio;
+}
+
+CaseCost read_case_cost(const std::filesystem::path& run_dir) {
+  CaseCost cost;
+  const std::filesystem::path file = run_dir / "run.json";
+  if (!std::filesystem::exists(file)) return cost;
+  const Json j = Json::parse(read_text_file(file), file.string());
+  cost.wall_seconds = json_number_or_nan(j, "wall_seconds");
+  cost.particle_steps = json_number_or_nan(j, "particle_steps");
+  cost.particle_steps_per_second = json_number_or_nan(j, "particle_steps_per_second");
+  cost.particles = json_number_or_nan(j, "particles");
+  cost.segments = json_number_or_nan(j, "segments");
+  return cost;
+}
+
+void read_sinkhole_comparison(const MechanismComparison& c, CaseSummary& s) {
+  s.dem_surface_diameter = c.dem_surface_diameter;
+  s.supposition_surface_diameter = c.supposition.surface_diameter;
+  s.angle_from_surface_deg = c.angle_from_surface_deg;
+  s.dem_size_class = std::isfinite(c.dem_surface_diameter) ? size_class_name(c.dem_size_class) : "";
+  s.supposition_size_class = size_class_name(c.supposition.size_class);
+}
+
+Json to_json(const CaseSummary& s) {
+  Json j = Json::object();
+  j.set("name", s.name);
+  j.set("label", s.label);
+  j.set("trapdoor_width_m", number(s.trapdoor_width));
+  j.set("travel_m", number(s.travel));
+  j.set("mean_diameter_m", number(s.mean_diameter));
+  j.set("band_angle_deg", number(s.band_angle_deg));
+  j.set("band_angle_left_deg", number(s.band_angle_left_deg));
+  j.set("band_angle_right_deg", number(s.band_angle_right_deg));
+  j.set("band_height_m", number(s.band_height));
+  j.set("band_width_diameters", number(s.band_width_d));
+  j.set("zone_surface_m", number(s.zone_surface));
+  j.set("zone_mid_height_m", number(s.zone_mid_height));
+  j.set("shape_ratio", number(s.shape_ratio));
+  j.set("shape", s.shape);
+  j.set("min_load_ratio", number(s.min_load_ratio));
+  j.set("min_load_at_over_B", number(s.min_load_at_over_b));
+  j.set("final_load_ratio", number(s.final_load_ratio));
+  j.set("dem_surface_diameter_prototype_m", number(s.dem_surface_diameter));
+  j.set("supposition_surface_diameter_prototype_m", number(s.supposition_surface_diameter));
+  j.set("angle_of_draw_from_surface_deg", number(s.angle_from_surface_deg));
+  j.set("dem_size_class", s.dem_size_class);
+  j.set("supposition_size_class", s.supposition_size_class);
+  Json cost = Json::object();
+  cost.set("wall_seconds", number(s.cost.wall_seconds));
+  cost.set("particle_steps", number(s.cost.particle_steps));
+  cost.set("particle_steps_per_second", number(s.cost.particle_steps_per_second));
+  cost.set("particles", number(s.cost.particles));
+  cost.set("segments", number(s.cost.segments));
+  j.set("cost", cost);
+  return j;
+}
+
+}  // namespace trapdem

@@ -1,0 +1,131 @@
+#include "study/study_definition.hpp"
+
+#include <cctype>
+
+#include <fmt/format.h>
+
+#include "dem/errors.hpp"
+#include "io/config.hpp"
+
+namespace fs = std::filesystem;
+
+namespace trapdem {
+
+namespace {
+
+// A base (preset or config file) and the overrides under `set`, from a scale's or a case's table.
+ConfigRecipe read_recipe(Config& document, const std::string& table, const fs::path& study_folder) {
+  ConfigRecipe recipe;
+  recipe.preset = document.get_string(table + ".preset", "");
+  const std::string config = document.get_string(table + ".config", "");
+  if (!recipe.preset.empty() && !config.empty())
+    throw document.error(table + ".config", "either preset or config, not both");
+  if (!config.empty()) {
+    recipe.config = fs::path(config).is_absolute() ? fs::path(config) : study_folder / config;
+    if (!fs::exists(recipe.config))
+      throw document.error(table + ".config", fmt::format("an existing configuration file ({} not found)",
+                                                          recipe.config.string()));
+  }
+  if (document.has(table + ".set")) {
+    if (!document.is_table(table + ".set"))
+      throw document.error(table + ".set", "a table of configuration keys, e.g. [" + table + ".set.contact]");
+    recipe.overrides = overrides_from_table(document, table + ".set");
+  }
+  return recipe;
+}
+
+}  // namespace
+
+bool is_valid_case_name(const std::string& name) {
+  if (name.empty() || name == "." || name == "..") return false;
+  for (char c : name)
+    if (!(std::isalnum(static_cast<unsigned char>(c)) || c == '-' || c == '_' || c == '.')) return false;
+  return true;
+}
+
+std::vector<std::pair<std::string, std::string>> flatten_values(Config& document, const std::string& table) {
+  std::vector<std::pair<std::string, std::string>> out;
+  for (const std::string& key : document.keys(table)) {
+    const std::string full = table.empty() ? key : table + "." + key;
+    if (document.is_table(full)) {
+      for (auto& [inner, value] : flatten_values(document, full)) out.emplace_back(key + "." + inner, std::move(value));
+    } else {
+      out.emplace_back(key, document.require_value_text(full));
+    }
+  }
+  return out;
+}
+
+std::vector<std::string> overrides_from_table(Config& document, const std::string& table) {
+  std::vector<std::string> out;
+  for (const auto& [key, value] : flatten_values(document, table)) out.push_back(key + "=" + value);
+  return out;
+}
+
+const StudyScale& StudyDefinition::scale(const std::string& wanted) const {
+  std::string known;
+  for (const StudyScale& s : scales) {
+    if (s.name == wanted) return s;
+    known += (known.empty() ? "" : ", ") + s.name;
+  }
+  throw InputError(fmt::format("{}: no scale named '{}' (the study has: {})",
+                               source.empty() ? name : source.string(), wanted, known));
+}
+
+StudyDefinition load_study(const fs::path& file) {
+  Config document = Config::load_file(file.string());
+  const fs::path folder = fs::absolute(file).parent_path();
+  StudyDefinition study;
+  study.source = file;
+  study.name = document.get_string("name", file.stem().string());
+  study.description = document.get_string("description", "");
+
+  if (!document.is_table("scales")) throw document.error("scales", "a table of scales, e.g. [scales.demo] preset = \"demo\"");
+  for (const std::string& name : document.keys("scales")) {
+    const std::string table = "scales." + name;
+    if (!document.is_table(table)) throw document.error(table, "a table (preset, config, description, set)");
+    StudyScale scale;
+    scale.name = name;
+    scale.description = document.get_string(table + ".description", "");
+    scale.base = read_recipe(document, table, folder);
+    if (scale.base.preset.empty() && scale.base.config.empty())
+      throw document.error(table, "a preset or a config: the base every case starts from at this scale");
+    study.scales.push_back(std::move(scale));
+  }
+  study.default_scale = document.get_string("default_scale", study.scales.front().name);
+  study.scale(study.default_scale);  // must exist
+
+  if (!document.is_table("cases")) throw document.error("cases", "a table of cases, e.g. [cases.calibrated]");
+  for (const std::string& name : document.keys("cases")) {
+    const std::string table = "cases." + name;
+    if (!is_valid_case_name(name))
+      throw document.error(table, "a case name usable as a folder name (letters, digits, '-', '_', '.')");
+    if (!document.is_table(table)) throw document.error(table, "a table (label, preset, config, set)");
+    StudyCase c;
+    c.name = name;
+    c.label = document.get_string(table + ".label", name);
+    c.own = read_recipe(document, table, folder);
+    study.cases.push_back(std::move(c));
+  }
+  if (study.cases.empty()) throw document.error("cases", "at least one case");
+
+  study.report.contours_at = document.get_double("report.contours_at", 0.01, "m", Range::positive());
+  study.report.angle_of_draw_deg = document.get_double("report.angle_of_draw", 30.0, "degrees from the vertical",
+                                                       {0.0, 90.0, true, false});
+  study.report.max_strain = document.get_double("report.max_strain", 0.0, "-", Range::non_negative());
+  document.report_unused();
+  return study;
+}
+
+ConfigRecipe case_recipe(const StudyCase& study_case, const StudyScale& scale) {
+  ConfigRecipe recipe = scale.base;
+  if (!study_case.own.preset.empty() || !study_case.own.config.empty()) {
+    recipe.preset = study_case.own.preset;
+    recipe.config = study_case.own.config;
+  }
+  recipe.overrides.insert(recipe.overrides.end(), study_case.own.overrides.begin(), study_case.own.overrides.end());
+  recipe.overrides.push_back(fmt::format("name=\"{}\"", study_case.name));
+  return recipe;
+}
+
+}  // namespace trapdem

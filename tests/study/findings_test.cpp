@@ -1,0 +1,83 @@
+// The report's sentences say what the numbers show: the direction of a change over the cases,
+// whether it holds at every step, and no change where the differences are within the resolution.
+#include <gtest/gtest.h>
+
+#include <cmath>
+
+#include <fmt/format.h>
+
+#include "study/findings.hpp"
+#include "study/parameter_differences.hpp"
+
+using namespace trapdem;
+
+namespace {
+
+const std::vector<std::string> kLabels = {"Calibrated", "RF1", "RF2", "RF3"};
+
+std::string trend(const std::vector<double>& v, double tolerance = 1.0) {
+  return describe_trend("The band angle", kLabels, v, tolerance, [](double x) { return fmt::format("{:.1f}°", x); });
+}
+
+}  // namespace
+
+TEST(Findings, FallsAtEveryStep) {
+  EXPECT_EQ(trend({20.0, 15.0, 12.0, 8.0}),
+            "The band angle falls from 20.0° in Calibrated to 8.0° in RF3, at every step of the case order.");
+}
+
+TEST(Findings, RisesButNotAtEveryStep) {
+  EXPECT_EQ(trend({5.0, 9.0, 7.0, 12.0}),
+            "The band angle rises from 5.0° in Calibrated to 12.0° in RF3, but not at every step (lowest 5.0° in "
+            "Calibrated, highest 12.0° in RF3).");
+}
+
+TEST(Findings, WithinResolutionIsNoChange) {
+  EXPECT_EQ(trend({10.0, 10.4, 9.8, 10.5}),
+            "The band angle is about the same in every case (9.8° to 10.5°; differences up to 1.0° are within its "
+            "resolution).");
+}
+
+TEST(Findings, EndsWhereItStartsButVaries) {
+  EXPECT_EQ(trend({10.0, 15.0, 4.0, 10.5}),
+            "The band angle ends about where it starts (from 10.0° in Calibrated to 10.5° in RF3) but varies between "
+            "(lowest 4.0° in RF2, highest 15.0° in RF1).");
+}
+
+TEST(Findings, MissingValuesAreNamedAndLeftOut) {
+  const double nan = std::nan("");
+  EXPECT_EQ(trend({20.0, nan, 12.0, nan}),
+            "The band angle falls from 20.0° in Calibrated to 12.0° in RF2, at every step of the case order. (Not "
+            "measured in RF1 and RF3.)");
+  EXPECT_EQ(trend({nan, nan, 3.0, nan}).rfind("The band angle is 3.0° in RF2, the only case", 0), 0u);
+  EXPECT_EQ(trend({nan, nan, nan, nan}), "The band angle was not measured in any case.");
+}
+
+TEST(Findings, SinkholeSentenceCountsTheCasesWhereTheSuppositionIsLarger) {
+  std::vector<CaseSummary> cases(3);
+  const double dem[] = {10.0, 12.0, 20.0}, supposition[] = {14.0, 14.0, 14.0}, implied[] = {20.0, 24.0, 35.0};
+  for (int k = 0; k < 3; ++k) {
+    cases[k].label = kLabels[k];
+    cases[k].dem_surface_diameter = dem[k];
+    cases[k].supposition_surface_diameter = supposition[k];
+    cases[k].angle_from_surface_deg = implied[k];
+  }
+  const std::vector<std::string> f = study_findings(cases, 30.0);
+  EXPECT_EQ(f.back(),
+            "With an angle of draw of 30° the scenario supposition gives a larger sinkhole than the DEM's surface zone "
+            "of influence in 2 of 3 cases (supposition over DEM 0.70 to 1.40); the DEM surface zones imply angles of "
+            "draw of 20.0° to 35.0°.");
+}
+
+TEST(ParameterDifferences, OnlyKeysThatDifferInFirstSeenOrder) {
+  const std::vector<std::vector<std::pair<std::string, std::string>>> configs = {
+      {{"name", "\"a\""}, {"box.width", "0.25"}, {"contact.kinetic_friction", "0.18"}},
+      {{"name", "\"b\""}, {"box.width", "0.25"}, {"contact.kinetic_friction", "0.5"}, {"contact.extra", "1"}},
+  };
+  const auto d = differing_parameters(configs);
+  ASSERT_EQ(d.size(), 2u);
+  EXPECT_EQ(d[0].key, "contact.kinetic_friction");
+  EXPECT_EQ(d[0].values, (std::vector<std::string>{"0.18", "0.5"}));
+  EXPECT_EQ(d[1].key, "contact.extra");
+  EXPECT_EQ(d[1].values, (std::vector<std::string>{"—", "1"}));
+}

@@ -1,0 +1,147 @@
+// The study file: scales and cases in the order written, recipes composed as documented, and every
+// mistake reported with the file, line and key.
+#include <gtest/gtest.h>
+
+#include <filesystem>
+#include <fstream>
+
+#include "dem/errors.hpp"
+#include "io/config.hpp"
+#include "study/study_definition.hpp"
+
+namespace fs = std::filesystem;
+using namespace trapdem;
+
+namespace {
+
+fs::path write_study(const std::string& name, const std::string& text) {
+  const fs::path dir = fs::temp_directory_path() / ("trapdem-study-def-" + std::to_string(::getpid()));
+  fs::create_directories(dir);
+  const fs::path file = dir / name;
+  std::ofstream(file) << text;
+  return file;
+}
+
+std::string error_of(const std::string& text) {
+  try {
+    load_study(write_study("bad.toml", text));
+  } catch (const InputError& e) {
+    return e.what();
+  }
+  return "(no error)";
+}
+
+const char* kStudy = R"(name = "order"
+description = "cases out of alphabetical order"
+default_scale = "small"
+[scales.small]
+preset = "tiny"
+[scales.small.set]
+trapdoor.travel = 0.002
+[scales.big]
+preset = "demo"
+[report]
+contours_at = 0.002
+[cases.zeta]
+label = "Zeta"
+[cases.zeta.set.contact]
+kinetic_friction = 0.3
+rolling_model = "constant_torque"
+[cases.alpha]
+preset = "demo"
+[cases.alpha.set]
+output.snapshot_displacements = [0.0, 0.001]
+)";
+
+}  // namespace
+
+TEST(StudyDefinition, ScalesAndCasesInFileOrder) {
+  const StudyDefinition s = load_study(write_study("order.toml", kStudy));
+  ASSERT_EQ(s.scales.size(), 2u);
+  EXPECT_EQ(s.scales[0].name, "small");
+  EXPECT_EQ(s.scales[1].name, "big");
+  ASSERT_EQ(s.cases.size(), 2u);
+  EXPECT_EQ(s.cases[0].name, "zeta");  // not sorted by name
+  EXPECT_EQ(s.cases[0].label, "Zeta");
+  EXPECT_EQ(s.cases[1].name, "alpha");
+  EXPECT_EQ(s.cases[1].label, "alpha");  // default: the name
+  EXPECT_EQ(s.default_scale, "small");
+  EXPECT_DOUBLE_EQ(s.report.contours_at, 0.002);
+  EXPECT_DOUBLE_EQ(s.report.angle_of_draw_deg, 30.0);
+}
+
+TEST(StudyDefinition, RecipeIsScaleBaseThenScaleThenCaseOverrides) {
+  const StudyDefinition s = load_study(write_study("order.toml", kStudy));
+  const ConfigRecipe zeta = case_recipe(s.cases[0], s.scale("small"));
+  EXPECT_EQ(zeta.preset, "tiny");
+  EXPECT_EQ(zeta.overrides, (std::vector<std::string>{"trapdoor.travel=0.002", "contact.kinetic_friction=0.3",
+                                                      "contact.rolling_model=\"constant_torque\"", "name=\"zeta\""}));
+  // A case's own base replaces the scale's; the scale's overrides still apply.
+  const ConfigRecipe alpha = case_recipe(s.cases[1], s.scale("small"));
+  EXPECT_EQ(alpha.preset, "demo");
+  EXPECT_EQ(alpha.overrides, (std::vector<std::string>{"trapdoor.travel=0.002", "output.snapshot_displacements=[0.0, 0.001]",
+                                                       "name=\"alpha\""}));
+  // The overrides are valid --set text: applied to a document they give the values written.
+  Config c = Config::parse("", "test");
+  c.apply_overrides(zeta.overrides);
+  EXPECT_DOUBLE_EQ(c.get_double("contact.kinetic_friction", 0.0), 0.3);
+  EXPECT_EQ(c.get_string("contact.rolling_model", ""), "constant_torque");
+  EXPECT_EQ(c.get_string("name", ""), "zeta");
+}
+
+TEST(StudyDefinition, UnknownScaleListsTheKnownOnes) {
+  const StudyDefinition s = load_study(write_study("order.toml", kStudy));
+  try {
+    s.scale("paper");
+    FAIL() << "expected an error";
+  } catch (const InputError& e) {
+    EXPECT_NE(std::string(e.what()).find("no scale named 'paper'"), std::string::npos) << e.what();
+    EXPECT_NE(std::string(e.what()).find("small, big"), std::string::npos) << e.what();
+  }
+}
+
+TEST(StudyDefinition, MistakesNameFileLineAndKey) {
+  const std::string base = "[scales.s]\npreset = \"tiny\"\n";
+  // Unknown key, with its line.
+  std::string e = error_of(base + "[cases.a]\nlabl = \"A\"\n");
+  EXPECT_NE(e.find("bad.toml:4"), std::string::npos) << e;
+  EXPECT_NE(e.find("cases.a.labl"), std::string::npos) << e;
+  // A case name that cannot be a folder.
+  e = error_of(base + "[cases.\"a/b\"]\nlabel = \"A\"\n");
+  EXPECT_NE(e.find("folder name"), std::string::npos) << e;
+  // Both a preset and a config.
+  e = error_of(base + "[cases.a]\npreset = \"tiny\"\nconfig = \"x.toml\"\n");
+  EXPECT_NE(e.find("either preset or config"), std::string::npos) << e;
+  // A config file that is not there, named with the study's folder.
+  e = error_of(base + "[cases.a]\nconfig = \"nowhere.toml\"\n");
+  EXPECT_NE(e.find("nowhere.toml not found"), std::string::npos) << e;
+  // No cases; no scales; a scale without a base; a default scale that does not exist.
+  EXPECT_NE(error_of(base).find("cases"), std::string::npos);
+  EXPECT_NE(error_of("[cases.a]\n").find("scales"), std::string::npos);
+  e = error_of("[scales.s]\ndescription = \"x\"\n[cases.a]\n");
+  EXPECT_NE(e.find("a preset or a config"), std::string::npos) << e;
+  e = error_of("default_scale = \"paper\"\n" + base + "[cases.a]\n");
+  EXPECT_NE(e.find("no scale named 'paper'"), std::string::npos) << e;
+  // A table where a value belongs and a value where a table belongs.
+  e = error_of(base + "[cases.a]\nset = 3\n");
+  EXPECT_NE(e.find("cases.a.set"), std::string::npos) << e;
+  e = error_of(base + "[report]\ncontours_at = -1\n[cases.a]\n");
+  EXPECT_NE(e.find("report.contours_at"), std::string::npos) << e;
+}
+
+TEST(StudyDefinition, ThePaperStudyIsTable2) {
+  const StudyDefinition s = load_study(fs::path(TRAPDEM_SOURCE_DIR) / "studies" / "paper-table2.toml");
+  ASSERT_EQ(s.cases.size(), 4u);
+  // Table 2: (mu_k, mu_r) per case; mu_s = 0.18 in all.
+  const std::vector<std::pair<double, double>> table2 = {{0.18, 0.001}, {0.2, 0.2}, {0.5, 0.2}, {0.5, 0.4}};
+  for (std::size_t k = 0; k < 4; ++k) {
+    Config c = Config::parse("", "test");
+    c.apply_overrides(case_recipe(s.cases[k], s.scale("paper")).overrides);
+    EXPECT_DOUBLE_EQ(c.get_double("contact.static_friction", 0.0), 0.18) << s.cases[k].name;
+    EXPECT_DOUBLE_EQ(c.get_double("contact.kinetic_friction", 0.0), table2[k].first) << s.cases[k].name;
+    EXPECT_DOUBLE_EQ(c.get_double("contact.rolling_friction", 0.0), table2[k].second) << s.cases[k].name;
+  }
+  EXPECT_EQ(s.scale("paper").base.preset, "paper-calibrated");
+  EXPECT_EQ(s.scale("demo").base.preset, "demo");
+  EXPECT_DOUBLE_EQ(s.report.contours_at, 0.01);
+}

@@ -1,0 +1,296 @@
+// A study end to end on two tiny cases: the report and its page (opened in headless Chromium), a
+// study killed during its second case and started again (same numbers as one that ran straight
+// through), and a case whose configuration changed under a finished run (refused).
+#include <gtest/gtest.h>
+#include <omp.h>
+#include <signal.h>
+#include <spawn.h>
+#include <sys/wait.h>
+#include <unistd.h>
+
+#include <chrono>
+#include <cmath>
+#include <sstream>
+#include <filesystem>
+#include <fstream>
+#include <regex>
+#include <thread>
+
+#include "analysis/json.hpp"
+#include "dem/errors.hpp"
+#include "io/text_file.hpp"
+#include "study_command.hpp"
+
+extern char** environ;
+
+namespace fs = std::filesystem;
+using namespace trapdem;
+
+namespace {
+
+// Two tiny cases that differ in sliding friction; shortened (a shallow pour, 3 mm of travel) so that a
+// case takes a few seconds.
+const char* kStudy = R"(name = "tiny-pair"
+description = "Two tiny cases, smooth and rough grains"
+[scales.test]
+description = "the tiny preset, a shallow pour and 3 mm of travel"
+preset = "tiny"
+[scales.test.set]
+pluviation.fill_height = 0.02
+settling.max_time = 0.04
+trapdoor.travel = 0.003
+output.snapshot_displacements = [0.0, 0.001, 0.002, 0.003]
+[report]
+contours_at = 0.002
+[cases.smooth]
+label = "Smooth"
+[cases.smooth.set.contact]
+static_friction = 0.2
+kinetic_friction = 0.2
+[cases.rough]
+label = "Rough"
+[cases.rough.set.contact]
+static_friction = 0.6
+kinetic_friction = 0.6
+)";
+
+fs::path scratch(const std::string& name) {
+  const fs::path dir = fs::temp_directory_path() / ("trapdem-study-" + name + "-" + std::to_string(::getpid()));
+  fs::remove_all(dir);
+  fs::create_directories(dir);
+  return dir;
+}
+
+fs::path write_study_file(const fs::path& dir, const std::string& text = kStudy) {
+  const fs::path file = dir / "study.toml";
+  std::ofstream(file) << text;
+  return file;
+}
+
+Json summary_of(const fs::path& out) {
+  const fs::path file = out / "report" / "summary.json";
+  return Json::parse(read_text_file(file), file.string());
+}
+
+// The report's numbers without the run costs (wall clock differs between any two runs).
+std::string numbers_without_cost(const Json& summary) {
+  Json copy = Json::object();
+  Json cases = Json::array();
+  for (std::size_t k = 0; k < summary["cases"].size(); ++k) {
+    Json c = Json::object();
+    for (const auto& [key, value] : summary["cases"][k].members())
+      if (key != "cost") c.set(key, value);
+    cases.push_back(c);
+  }
+  copy.set("cases", cases);
+  copy.set("findings", summary["findings"]);
+  copy.set("strain_scale_max", summary["strain_scale_max"]);
+  return copy.dump();
+}
+
+// One study that ran straight through, shared by the tests (a few seconds of running).
+class StudyRun : public ::testing::Test {
+ protected:
+  static void SetUpTestSuite() {
+    dir_ = new fs::path(scratch("straight"));
+    app::StudyOptions o;
+    o.file = write_study_file(*dir_).string();
+    o.out = (*dir_ / "out").string();
+    o.threads = 1;
+    o.quiet = true;
+    ASSERT_EQ(app::run_study(o), 0);
+  }
+  static void TearDownTestSuite() {
+    fs::remove_all(*dir_);
+    delete dir_;
+  }
+  static fs::path out() { return *dir_ / "out"; }
+  static fs::path* dir_;
+};
+fs::path* StudyRun::dir_ = nullptr;
+
+struct BrowserResult {
+  int exit_code = -1;
+  int images = -1;                  // <img> elements on the page
+  std::string broken_images;        // their src, space-separated, of those that did not load
+  std::vector<std::string> console; // console messages (errors, warnings, logs: the page writes none)
+};
+
+// Opens `page` in headless Chromium with a checker appended (in a copy beside it, so relative image
+// paths resolve as for the page itself): after the load event it records which images did not load.
+// Console messages come from Chromium's log on stderr.
+BrowserResult open_in_chromium(const fs::path& page, const std::string& extra_script = "") {
+  std::string html = read_text_file(page);
+  const std::string checker =
+      "<script>window.addEventListener('load', () => {"
+      " const bad = Array.from(document.images).filter(i => !(i.complete && i.naturalWidth > 0))"
+      "   .map(i => i.getAttribute('src'));"
+      " document.body.setAttribute('data-image-count', String(document.images.length));"
+      " document.body.setAttribute('data-broken-images', bad.join(' ')); });</script>" + extra_script;
+  const std::size_t body_end = html.rfind("</body>");
+  EXPECT_NE(body_end, std::string::npos) << page;
+  html.insert(body_end, checker);
+  const fs::path copy = page.parent_path() / ".browser-check.html";
+  std::ofstream(copy) << html;
+  const fs::path profile = scratch("chromium-profile");
+  const fs::path dom = profile / "dom.html", log = profile / "stderr.txt";
+  const std::string command = "timeout 120 chromium --headless --no-sandbox --disable-gpu --no-first-run "
+                              "--user-data-dir=" + profile.string() +
+                              " --enable-logging=stderr --v=0 --virtual-time-budget=10000 --dump-dom 'file://" +
+                              fs::absolute(copy).string() + "' > " + dom.string() + " 2> " + log.string();
+  BrowserResult r;
+  const int status = std::system(command.c_str());
+  r.exit_code = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
+  const std::string text = read_text_file(dom);
+  std::smatch m;
+  if (std::regex_search(text, m, std::regex("data-image-count=\"([0-9]+)\""))) r.images = std::stoi(m[1]);
+  if (std::regex_search(text, m, std::regex("data-broken-images=\"([^\"]*)\""))) r.broken_images = m[1];
+  std::istringstream lines(read_text_file(log));
+  for (std::string line; std::getline(lines, line);)
+    if (line.find(":CONSOLE") != std::string::npos) r.console.push_back(line);
+  fs::remove(copy);
+  fs::remove_all(profile);
+  return r;
+}
+
+bool chromium_installed() { return std::system("command -v chromium > /dev/null 2>&1") == 0; }
+
+}  // namespace
+
+TEST_F(StudyRun, ReportHasEveryFigureAndMeasuredNumbers) {
+  const fs::path report = out() / "report";
+  for (const char* f : {"index.html", "strain_panel.png", "ground_reaction.png", "contours_smooth.png",
+                        "contours_rough.png", "summary.json", "metrics.csv"})
+    EXPECT_TRUE(fs::exists(report / f)) << f;
+  const Json s = summary_of(out());
+  ASSERT_EQ(s["cases"].size(), 2u);
+  EXPECT_EQ(s["cases"][0]["name"].as_string(), "smooth");
+  EXPECT_EQ(s["cases"][1]["name"].as_string(), "rough");
+  for (std::size_t k = 0; k < 2; ++k) {
+    const Json& c = s["cases"][k];
+    EXPECT_NEAR(c["travel_m"].as_number(), 0.003, 1e-4);
+    EXPECT_TRUE(std::isfinite(c["band_angle_deg"].as_number()));
+    EXPECT_GT(c["zone_surface_m"].as_number(), 0.0);
+    // Arching: the trapdoor load falls well below its value before lowering.
+    EXPECT_LT(c["min_load_ratio"].as_number(), 0.6);
+    EXPECT_GT(c["cost"]["particle_steps_per_second"].as_number(), 0.0);
+    EXPECT_EQ(c["cost"]["segments"].as_number(), 1.0);
+  }
+  // More friction, more arching (the tiny preset's test shows the same on its own).
+  EXPECT_LT(s["cases"][1]["min_load_ratio"].as_number(), s["cases"][0]["min_load_ratio"].as_number());
+  // The findings are the trends of these numbers: one for the arching says it falls from Smooth to Rough.
+  bool arching_sentence = false;
+  for (std::size_t k = 0; k < s["findings"].size(); ++k) {
+    const std::string f = s["findings"][k].as_string();
+    if (f.rfind("The least trapdoor load", 0) == 0) {
+      arching_sentence = true;
+      EXPECT_NE(f.find("falls from"), std::string::npos) << f;
+    }
+  }
+  EXPECT_TRUE(arching_sentence);
+  // The page names what differs: the two friction keys, and not the name.
+  const std::string page = read_text_file(report / "index.html");
+  EXPECT_NE(page.find("<code>contact.kinetic_friction</code>"), std::string::npos);
+  EXPECT_NE(page.find("<code>contact.static_friction</code>"), std::string::npos);
+  EXPECT_EQ(page.find("<code>name</code>"), std::string::npos);
+  EXPECT_EQ(page.find("http"), std::string::npos) << "the page must work offline";
+}
+
+TEST_F(StudyRun, PageOpensInHeadlessChromiumWithoutMissingImagesOrConsoleErrors) {
+  ASSERT_TRUE(chromium_installed()) << "chromium (Debian package) is needed: scripts/install-deps installs it";
+  const fs::path page = out() / "report" / "index.html";
+  const BrowserResult ok = open_in_chromium(page);
+  EXPECT_EQ(ok.exit_code, 0);
+  EXPECT_EQ(ok.images, 4);  // the strain panel, two contour maps, the ground reaction curves
+  EXPECT_EQ(ok.broken_images, "");
+  EXPECT_TRUE(ok.console.empty()) << ok.console.front();
+
+  // The check itself can fail: a page pointing at a missing image, and one writing to the console.
+  const fs::path broken = out() / "report" / "broken.html";
+  std::string html = read_text_file(page);
+  html.replace(html.find("ground_reaction.png\" alt"), std::string("ground_reaction.png").size(), "no_such_figure.png");
+  std::ofstream(broken) << html;
+  const BrowserResult missing = open_in_chromium(broken);
+  EXPECT_EQ(missing.broken_images, "no_such_figure.png");
+  const BrowserResult noisy = open_in_chromium(page, "<script>console.error('checked');</script>");
+  ASSERT_EQ(noisy.console.size(), 1u);
+  EXPECT_NE(noisy.console[0].find("checked"), std::string::npos);
+  fs::remove(broken);
+}
+
+TEST_F(StudyRun, KilledDuringTheSecondCaseAndStartedAgainGivesTheSameReport) {
+  const fs::path dir = scratch("killed");
+  const fs::path file = write_study_file(dir), out = dir / "out";
+  const std::string executable = TRAPDEM_EXECUTABLE;
+  std::vector<std::string> args = {executable, "study", file.string(), "--out", out.string(), "--threads", "1",
+                                   "--quiet"};
+  std::vector<char*> argv;
+  for (std::string& a : args) argv.push_back(a.data());
+  argv.push_back(nullptr);
+  pid_t pid = 0;
+  ASSERT_EQ(posix_spawn(&pid, executable.c_str(), nullptr, nullptr, argv.data(), environ), 0);
+  // Kill it (no chance to write anything) once the second case has written its first checkpoint.
+  const fs::path second = out / "cases" / "rough";
+  const auto deadline = std::chrono::steady_clock::now() + std::chrono::minutes(3);
+  while (!fs::exists(second / "checkpoint.h5") && std::chrono::steady_clock::now() < deadline)
+    std::this_thread::sleep_for(std::chrono::milliseconds(10));
+  ASSERT_TRUE(fs::exists(second / "checkpoint.h5")) << "the second case never checkpointed";
+  ASSERT_EQ(::kill(pid, SIGKILL), 0);
+  int status = 0;
+  ASSERT_EQ(::waitpid(pid, &status, 0), pid);
+  ASSERT_TRUE(WIFSIGNALED(status)) << "the study ended before it was killed";
+  ASSERT_FALSE(fs::exists(second / "run.json")) << "the second case had finished: nothing left to resume";
+  EXPECT_TRUE(fs::exists(out / "cases" / "smooth" / "run.json"));
+  EXPECT_FALSE(fs::exists(out / "report"));
+
+  app::StudyOptions again;
+  again.file = file.string();
+  again.out = out.string();
+  again.threads = 1;
+  again.quiet = true;
+  ASSERT_EQ(app::run_study(again), 0);
+  const std::string log = read_text_file(out / "study.log");
+  EXPECT_NE(log.find("[1/2] smooth: finished before, skipped"), std::string::npos) << log;
+  EXPECT_NE(log.find("[2/2] rough: resuming from its checkpoint"), std::string::npos) << log;
+  // Bitwise-reproducible runs at one thread: the resumed study's numbers are exactly the straight one's.
+  EXPECT_EQ(numbers_without_cost(summary_of(out)), numbers_without_cost(summary_of(StudyRun::out())));
+  EXPECT_EQ(summary_of(out)["cases"][1]["cost"]["segments"].as_number(), 1.0);  // the killed segment left no record
+  fs::remove_all(dir);
+}
+
+TEST_F(StudyRun, ACaseWhoseConfigurationChangedIsRefused) {
+  std::string text = kStudy;
+  text.replace(text.find("kinetic_friction = 0.6"), 22, "kinetic_friction = 0.7");
+  const fs::path dir = scratch("changed");
+  app::StudyOptions o;
+  o.file = write_study_file(dir, text).string();
+  o.out = out().string();
+  o.threads = 1;
+  o.quiet = true;
+  try {
+    app::run_study(o);
+    FAIL() << "expected an error";
+  } catch (const InputError& e) {
+    const std::string what = e.what();
+    EXPECT_NE(what.find("another configuration than case 'rough'"), std::string::npos) << what;
+    EXPECT_NE(what.find("kinetic_friction"), std::string::npos) << what;
+  }
+  fs::remove_all(dir);
+}
+
+TEST_F(StudyRun, AnotherScaleInTheSameFolderIsRefused) {
+  std::string text = kStudy;
+  text = std::regex_replace(text, std::regex("scales\\.test"), "scales.other");
+  const fs::path dir = scratch("scale");
+  app::StudyOptions o;
+  o.file = write_study_file(dir, text).string();
+  o.out = out().string();
+  o.quiet = true;
+  try {
+    app::run_study(o);
+    FAIL() << "expected an error";
+  } catch (const InputError& e) {
+    EXPECT_NE(std::string(e.what()).find("holds study 'tiny-pair' at scale 'test'"), std::string::npos) << e.what();
+  }
+  fs::remove_all(dir);
+}
