@@ -122,32 +122,37 @@ CompareResult compare_directories(const CompareOptions& o) {
   return c;
 }
 
+void write_compare_figure(CompareResult c, const fs::path& out) {
+  const double delta = c.trapdoor_travel();
+  if (out.has_parent_path()) fs::create_directories(out.parent_path());
+  plot::ComparisonFigure fig;
+  fig.title = fmt::format("{}: DEM against PIV, settlement at δ = {}", c.geometry.name, format_mm(delta));
+  fig.subtitle = fmt::format(
+      "RMS(w_DEM - w_PIV) / δ = {} over the compared area; bias {}; {} of the grid compared\n"
+      "PIV image {} ({}) from image {} ({}); grid {}; DEM snapshots {} -> {}",
+      percent(c.error.rms_normalised()), percent(c.error.bias_normalised()), percent(c.error.coverage), c.piv_image,
+      c.piv_image_name, c.piv_reference_image, c.piv_reference_name, format_mm(c.dem.grid.spacing),
+      c.dem_reference_label, c.dem_at_label);
+  mask_to_common(c.dem, c.piv);
+  fig.dem = c.dem;
+  fig.piv = c.piv;
+  const TrapdoorGeometry& t = c.geometry.trapdoor;
+  fig.box_left = -t.centre_x;
+  fig.box_right = c.geometry.box_width - t.centre_x;
+  fig.box_height = c.geometry.box_height - t.base_z;
+  fig.trapdoor_width = t.width;
+  fig.trapdoor_travel = delta;
+  plot::write_comparison_png(out, fig);
+}
+
 int run_compare(const CompareOptions& o) {
-  CompareResult c = compare_directories(o);
+  const CompareResult c = compare_directories(o);
   const double delta = c.trapdoor_travel();
   fs::path out;
   if (!o.no_figure) {
     out = o.out.empty() ? fs::path(o.dem_dir) / "analysis" / fmt::format("compare_{:g}mm.png", std::round(c.at_displacement * 1e4) / 10.0)
                         : fs::path(o.out);
-    if (out.has_parent_path()) fs::create_directories(out.parent_path());
-    plot::ComparisonFigure fig;
-    fig.title = fmt::format("{}: DEM against PIV, settlement at δ = {}", c.geometry.name, format_mm(delta));
-    fig.subtitle = fmt::format(
-        "RMS(w_DEM - w_PIV) / δ = {} over the compared area; bias {}; {} of the grid compared\n"
-        "PIV image {} ({}) from image {} ({}); grid {}; DEM snapshots {} -> {}",
-        percent(c.error.rms_normalised()), percent(c.error.bias_normalised()), percent(c.error.coverage), c.piv_image,
-        c.piv_image_name, c.piv_reference_image, c.piv_reference_name, format_mm(c.dem.grid.spacing),
-        c.dem_reference_label, c.dem_at_label);
-    mask_to_common(c.dem, c.piv);
-    fig.dem = c.dem;
-    fig.piv = c.piv;
-    const TrapdoorGeometry& t = c.geometry.trapdoor;
-    fig.box_left = -t.centre_x;
-    fig.box_right = c.geometry.box_width - t.centre_x;
-    fig.box_height = c.geometry.box_height - t.base_z;
-    fig.trapdoor_width = t.width;
-    fig.trapdoor_travel = delta;
-    plot::write_comparison_png(out, fig);
+    write_compare_figure(c, out);
   }
   if (o.json) {
     Json j = Json::object();

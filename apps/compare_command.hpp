@@ -4,6 +4,7 @@
 // the common area over the trapdoor displacement) with the bias and coverage, and the overlay
 // figure of both settlement contour sets (issue 6; docs/analysis.md).
 #include <cstddef>
+#include <filesystem>
 #include <string>
 
 #include "analysis/analysis_run.hpp"
@@ -39,6 +40,9 @@ struct CompareResult {
 
 // Reads, matches and compares (no output written). Throws InputError / FileError.
 CompareResult compare_directories(const CompareOptions& options);
+
+// The overlay figure of both settlement contour sets, with the error in its subtitle.
+void write_compare_figure(CompareResult result, const std::filesystem::path& png);
 
 // The whole command; returns the exit code.
 int run_compare(const CompareOptions& options);

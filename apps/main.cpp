@@ -5,6 +5,7 @@
 #include <fmt/format.h>
 
 #include "analyze_command.hpp"
+#include "calibrate_command.hpp"
 #include "compare_command.hpp"
 #include "dem/errors.hpp"
 #include "io/file_error.hpp"
@@ -142,6 +143,19 @@ int main(int argc, char** argv) {
   study_cmd->add_flag("--quiet", study.quiet, "Runs' progress lines only in their run.log");
   study_cmd->add_flag("--report-only", study.report_only, "Run nothing: report on the finished cases");
 
+  trapdem::app::CalibrateOptions calibrate;
+  auto* cal = app.add_subcommand("calibrate", "Run a parameter grid as a study and rank it against PIV (compare)");
+  cal->add_option("base", calibrate.base, "Configuration file (TOML) the grid varies")->required()->check(CLI::ExistingFile);
+  cal->add_option("--vary", calibrate.vary, "KEY=V1,V2,... (repeatable; every combination runs)")->required();
+  cal->add_option("--target", calibrate.target, "PIV folder (piv.h5 in model coordinates)")->required();
+  cal->add_option("--at", calibrate.at, "Trapdoor displacement to compare, e.g. 10mm")->required();
+  cal->add_option("--out", calibrate.out, "Folder (default trapdem-out/calibrate-<base name>)");
+  cal->add_option("--grid", calibrate.grid, "Spacing of the common grid (default 2mm)");
+  cal->add_option("--piv-trapdoor", calibrate.piv_trapdoor, "Trapdoor centre X,Z in the PIV coordinates (see compare)");
+  cal->add_option("--threads", calibrate.threads, "OpenMP threads per run (default: all cores)")
+      ->check(CLI::NonNegativeNumber);
+  cal->add_flag("--quiet", calibrate.quiet, "Runs' progress lines only in their run.log");
+
   CLI11_PARSE(app, argc, argv);
   try {
     if (run_cmd->parsed()) return trapdem::app::run_experiment(run);
@@ -155,6 +169,7 @@ int main(int argc, char** argv) {
     if (cmp_cmd->parsed()) return trapdem::app::run_compare(compare);
     if (sink->parsed()) return trapdem::app::run_sinkhole(sinkhole);
     if (study_cmd->parsed()) return trapdem::app::run_study(study);
+    if (cal->parsed()) return trapdem::app::run_calibrate(calibrate);
   } catch (const trapdem::InputError& e) {
     fmt::print(stderr, "trapdem: input error: {}\n", e.what());
     return 2;

@@ -99,7 +99,7 @@ void claim_folder(const StudyDefinition& study, const StudyScale& scale, const f
   Json j = Json::object();
   j.set("study", study.name);
   j.set("scale", scale.name);
-  j.set("study_file", fs::absolute(study.source).string());
+  j.set("study_file", study.source.empty() ? "" : fs::absolute(study.source).string());
   Json cases = Json::array();
   for (const StudyCase& c : study.cases) cases.push_back(c.name);
   j.set("cases", cases);
@@ -213,20 +213,29 @@ fs::path write_study_outputs(const StudyDefinition& study, const StudyScale& sca
   return write_study_report(out / "report", input);
 }
 
-int run_study(const StudyOptions& o) {
-  const StudyDefinition study = load_study(o.file);
-  const StudyScale& scale = study.scale(o.scale.empty() ? study.default_scale : o.scale);
-  const fs::path out = o.out.empty() ? fs::path("trapdem-out") / (study.name + "-" + scale.name) : fs::path(o.out);
+bool run_study_in_folder(const StudyDefinition& study, const StudyScale& scale, const fs::path& out, int threads,
+                         bool quiet) {
   std::error_code ec;
   fs::create_directories(out, ec);
   if (ec) throw FileError(fmt::format("cannot create the study folder {}: {}", out.string(), ec.message()));
   claim_folder(study, scale, out);
-  const bool quiet = o.quiet;
   say(out, fmt::format("study '{}' at scale '{}' ({} cases) in {}", study.name, scale.name, study.cases.size(),
                        out.string()), quiet);
-  if (!o.report_only && !run_study_cases(study, scale, out, o.threads, o.quiet)) return 130;
+  return run_study_cases(study, scale, out, threads, quiet);
+}
+
+int run_study(const StudyOptions& o) {
+  const StudyDefinition study = load_study(o.file);
+  const StudyScale& scale = study.scale(o.scale.empty() ? study.default_scale : o.scale);
+  const fs::path out = o.out.empty() ? fs::path("trapdem-out") / (study.name + "-" + scale.name) : fs::path(o.out);
+  if (o.report_only) {
+    if (!fs::exists(out / "study.json")) throw InputError(fmt::format("--report-only: {} holds no study", out.string()));
+    claim_folder(study, scale, out);
+  } else if (!run_study_in_folder(study, scale, out, o.threads, o.quiet)) {
+    return 130;
+  }
   const fs::path page = write_study_outputs(study, scale, out, o.quiet);
-  say(out, fmt::format("report: {}", page.string()), quiet);
+  say(out, fmt::format("report: {}", page.string()), o.quiet);
   if (!o.quiet) {
     const Json summary = Json::parse(read_text_file(out / "report" / "summary.json"));
     for (std::size_t k = 0; k < summary["findings"].size(); ++k)

@@ -28,6 +28,10 @@ enum class CaseAction { ran, resumed, skipped_finished };
 bool run_study_cases(const StudyDefinition& study, const StudyScale& scale, const std::filesystem::path& out,
                      int threads, bool quiet);
 
+// Creates `out`, claims it for this study and scale (refusing another's), then run_study_cases.
+bool run_study_in_folder(const StudyDefinition& study, const StudyScale& scale, const std::filesystem::path& out,
+                         int threads, bool quiet);
+
 // Analyses every finished case and writes out/report/. Returns the page's path.
 std::filesystem::path write_study_outputs(const StudyDefinition& study, const StudyScale& scale,
                                           const std::filesystem::path& out, bool quiet);

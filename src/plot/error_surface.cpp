@@ -1,0 +1,98 @@
+#include "plot/error_surface.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <stdexcept>
+
+#include <fmt/format.h>
+
+#include "plot/canvas.hpp"
+#include "plot/colour_bar.hpp"
+#include "plot/colour_map.hpp"
+#include "plot/line_chart.hpp"
+#include "plot/text.hpp"
+
+namespace trapdem::plot {
+
+namespace {
+
+void write_one_key(const std::filesystem::path& path, const ErrorSurface& s) {
+  LineChart chart;
+  chart.title = s.title;
+  chart.subtitle = s.subtitle;
+  chart.x_label = s.x_key;
+  chart.y_label = s.error_label;
+  LineSeries series;
+  series.name = "error";
+  series.colour = series_colour(0);
+  for (std::size_t k = 0; k < s.x_values.size(); ++k) {
+    if (!std::isfinite(s.error[k])) continue;
+    series.x.push_back(std::stod(s.x_values[k]));
+    series.y.push_back(s.error[k] * s.error_scale);
+  }
+  chart.series = {series};
+  write_line_chart_png(path, chart);
+}
+
+}  // namespace
+
+void write_error_surface_png(const std::filesystem::path& path, const ErrorSurface& s) {
+  const std::size_t nx = s.x_values.size(), ny = s.y_key.empty() ? 1 : s.y_values.size();
+  if (nx == 0 || s.error.size() != nx * ny) throw std::invalid_argument("error surface: grid and errors do not match");
+  if (s.y_key.empty()) {
+    write_one_key(path, s);
+    return;
+  }
+  double lo = INFINITY, hi = -INFINITY;
+  std::size_t best = s.error.size();
+  for (std::size_t k = 0; k < s.error.size(); ++k) {
+    if (!std::isfinite(s.error[k])) continue;
+    lo = std::min(lo, s.error[k]);
+    hi = std::max(hi, s.error[k]);
+    if (best == s.error.size() || s.error[k] < s.error[best]) best = k;
+  }
+  if (!(hi > lo)) hi = lo + 1e-12;
+  const double cell_w = std::clamp(560.0 / nx, 60.0, 140.0), cell_h = std::clamp(420.0 / ny, 44.0, 100.0);
+  const double left = 150.0, top = 110.0, bottom = 90.0, right = 170.0;
+  const int width = static_cast<int>(left + nx * cell_w + right), height = static_cast<int>(top + ny * cell_h + bottom);
+  Canvas canvas(width, height);
+  cairo_t* cr = canvas.cr();
+  draw_title(cr, 20.0, 16.0, s.title, s.subtitle, 20.0);
+  const ColourMap map(ColourMapKind::viridis);
+  for (std::size_t iy = 0; iy < ny; ++iy) {
+    for (std::size_t ix = 0; ix < nx; ++ix) {
+      const double e = s.error[iy * nx + ix];
+      // Larger y values on top, as on any plot.
+      const Rect cell{left + ix * cell_w, top + (ny - 1 - iy) * cell_h, cell_w, cell_h};
+      set_colour(cr, std::isfinite(e) ? map.of(e, lo, hi) : Rgb{0.85, 0.85, 0.85});
+      cairo_rectangle(cr, cell.x, cell.y, cell.w, cell.h);
+      cairo_fill(cr);
+      const bool dark = std::isfinite(e) && (e - lo) / (hi - lo) < 0.55;
+      draw_text(cr, std::isfinite(e) ? fmt::format("{:.3g}", e * s.error_scale) : "—", cell.x + 0.5 * cell.w,
+                cell.y + 0.5 * cell.h,
+                TextStyle{.size = 15.0, .bold = iy * nx + ix == best,
+                          .colour = dark ? Rgb{1, 1, 1} : Rgb{0.1, 0.1, 0.1}, .h = HAlign::centre, .v = VAlign::middle});
+    }
+  }
+  if (best < s.error.size()) {
+    const std::size_t bx = best % nx, by = best / nx;
+    set_colour(cr, Rgb{0.85, 0.1, 0.1});
+    cairo_set_line_width(cr, 4.0);
+    cairo_rectangle(cr, left + bx * cell_w + 2.0, top + (ny - 1 - by) * cell_h + 2.0, cell_w - 4.0, cell_h - 4.0);
+    cairo_stroke(cr);
+  }
+  const TextStyle tick{.size = 14.0, .h = HAlign::centre, .v = VAlign::top};
+  for (std::size_t ix = 0; ix < nx; ++ix) draw_text(cr, s.x_values[ix], left + (ix + 0.5) * cell_w, top + ny * cell_h + 8.0, tick);
+  for (std::size_t iy = 0; iy < ny; ++iy)
+    draw_text(cr, s.y_values[iy], left - 10.0, top + (ny - 1 - iy + 0.5) * cell_h,
+              TextStyle{.size = 14.0, .h = HAlign::right, .v = VAlign::middle});
+  draw_text(cr, s.x_key, left + 0.5 * nx * cell_w, top + ny * cell_h + 40.0,
+            TextStyle{.size = 16.0, .h = HAlign::centre, .v = VAlign::top});
+  draw_text(cr, s.y_key, 24.0, top + 0.5 * ny * cell_h,
+            TextStyle{.size = 16.0, .angle_deg = 90.0, .h = HAlign::centre, .v = VAlign::top});
+  ColourBarStyle bar{.label = s.error_label, .tick_scale = s.error_scale};
+  draw_colour_bar(cr, {left + nx * cell_w + 30.0, top, 24.0, ny * cell_h}, map, lo, hi, bar);
+  canvas.write_png(path);
+}
+
+}  // namespace trapdem::plot
