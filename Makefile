@@ -3,7 +3,7 @@ BUILD ?= build
 JOBS ?= $(shell nproc)
 CMAKE_FLAGS ?=
 
-.PHONY: all deps configure build test test-slow demo bench bench-peers clean
+.PHONY: all deps configure build test test-slow demo study bench bench-peers clean
 
 all: build
 
@@ -25,6 +25,10 @@ test-slow: build
 
 demo: build
 	@bash scripts/demo.sh $(BUILD)
+
+# The paper's Table 2 at the demo's scale (~25 min on 2 cores): trapdem-out/paper-table2-demo/report/index.html
+study: build
+	@$(BUILD)/apps/trapdem study studies/paper-table2.toml --quiet
 
 bench: build
 	@bash bench/run-bench.sh $(BUILD)
