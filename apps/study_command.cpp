@@ -47,9 +47,10 @@ fs::path base_file(const ConfigRecipe& recipe) {
   return recipe.config.empty() ? preset_path(recipe.preset) : recipe.config;
 }
 
-// The case's configuration as `trapdem run` would resolve it (validated: a bad override fails here,
-// before any case runs, naming the case).
-std::string resolved_configuration(const StudyCase& c, const ConfigRecipe& recipe) {
+}  // namespace
+
+std::string resolved_case_configuration(const StudyCase& c, const StudyScale& scale) {
+  const ConfigRecipe recipe = case_recipe(c, scale);
   try {
     Config config = Config::load_file(base_file(recipe).string());
     config.apply_overrides(recipe.overrides);
@@ -59,6 +60,8 @@ std::string resolved_configuration(const StudyCase& c, const ConfigRecipe& recip
     throw InputError(fmt::format("case '{}': {}", c.name, e.what()));
   }
 }
+
+namespace {
 
 // The first line where two resolved configurations differ, for the message.
 std::string first_difference(const std::string& a, const std::string& b) {
@@ -115,7 +118,7 @@ bool run_study_cases(const StudyDefinition& study, const StudyScale& scale, cons
   // Every case's configuration first, and each against what its folder holds: a typo in the fourth
   // case, or a case changed since it ran, should not wait for three runs.
   for (const StudyCase& c : study.cases) {
-    const std::string resolved = resolved_configuration(c, case_recipe(c, scale));
+    const std::string resolved = resolved_case_configuration(c, scale);
     const fs::path dir = case_directory(out, c);
     if (!fs::exists(dir / "checkpoint.h5") && !run_finished(dir)) continue;
     const std::string there = fs::exists(dir / "resolved.toml") ? read_text_file(dir / "resolved.toml") : "";
@@ -182,7 +185,15 @@ fs::path write_study_outputs(const StudyDefinition& study, const StudyScale& sca
     AnalyzeOptions a;
     a.dir = dir.string();
     a.quiet = true;
-    finals.push_back(std::make_unique<AnalysisResult>(analyze_and_write(a)));
+    try {
+      finals.push_back(std::make_unique<AnalysisResult>(analyze_and_write(a)));
+    } catch (const InputError& e) {
+      // One case that cannot be analysed (too few particles in view, say) does not hide the others.
+      r.missing_note = fmt::format("not analysed: {}", e.what());
+      r.summary.cost = read_case_cost(dir);
+      input.cases.push_back(std::move(r));
+      continue;
+    }
     AnalysisResult& final_analysis = *finals.back();
     final_analysis.geometry.name = c.label;
     r.final_analysis = &final_analysis;

@@ -36,6 +36,10 @@ bool run_study_in_folder(const StudyDefinition& study, const StudyScale& scale, 
 std::filesystem::path write_study_outputs(const StudyDefinition& study, const StudyScale& scale,
                                           const std::filesystem::path& out, bool quiet);
 
+// The case's configuration at the scale as `trapdem run` resolves it (resolved.toml's text); throws
+// InputError naming the case if it does not validate.
+std::string resolved_case_configuration(const StudyCase& study_case, const StudyScale& scale);
+
 std::filesystem::path case_directory(const std::filesystem::path& out, const StudyCase& study_case);
 
 // The whole command. Returns the exit code (130 if interrupted).

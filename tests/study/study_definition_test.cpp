@@ -7,7 +7,9 @@
 
 #include "dem/errors.hpp"
 #include "io/config.hpp"
+#include "run_command.hpp"
 #include "study/study_definition.hpp"
+#include "study_command.hpp"
 
 namespace fs = std::filesystem;
 using namespace trapdem;
@@ -144,4 +146,22 @@ TEST(StudyDefinition, ThePaperStudyIsTable2) {
   EXPECT_EQ(s.scale("paper").base.preset, "paper-calibrated");
   EXPECT_EQ(s.scale("demo").base.preset, "demo");
   EXPECT_DOUBLE_EQ(s.report.contours_at, 0.01);
+}
+
+// Every case of the paper study resolves and validates at both scales (what the study checks before
+// its first run), and at the paper scale each case is its paper preset: the same contact law.
+TEST(StudyDefinition, ThePaperStudyResolvesAtBothScales) {
+  const StudyDefinition s = load_study(fs::path(TRAPDEM_SOURCE_DIR) / "studies" / "paper-table2.toml");
+  const std::vector<std::string> presets = {"paper-calibrated", "paper-rf1", "paper-rf2", "paper-rf3"};
+  for (std::size_t k = 0; k < s.cases.size(); ++k) {
+    for (const StudyScale& scale : s.scales) {
+      Config resolved = Config::parse(app::resolved_case_configuration(s.cases[k], scale), s.cases[k].name);
+      EXPECT_EQ(resolved.get_string("name", ""), s.cases[k].name);
+    }
+    Config study_case = Config::parse(app::resolved_case_configuration(s.cases[k], s.scale("paper")), "study");
+    Config preset = Config::load_file((app::preset_directory() / (presets[k] + ".toml")).string());
+    for (const char* key : {"contact.static_friction", "contact.kinetic_friction", "contact.rolling_friction",
+                            "contact.rolling_model", "contact.restitution", "box.width", "trapdoor.width"})
+      EXPECT_EQ(study_case.require_value_text(key), preset.require_value_text(key)) << presets[k] << " " << key;
+  }
 }
