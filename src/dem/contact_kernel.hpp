@@ -86,14 +86,12 @@ struct ContactForce {
   // With mu_k < mu_s a yielding contact drops from mu_s to mu_k |F_n|. With mu_k > mu_s (the
   // paper's Table 2) a contact past mu_s |F_n| is marked sliding but keeps its elastic force up
   // to mu_k |F_n|: it carries at most mu_k |F_n|, and mu_s changes no force.
-  bool sliding = h.sliding();
+  // Written as selects rather than nested branches, so that the batch loop over contacts
+  // (simulation.cpp) can be vectorised.
   const double ft2 = norm2(ft);
-  if (sliding) {
-    if (ft2 <= c.mu_k * c.mu_k * fn_abs * fn_abs) sliding = false;
-  } else if (ft2 > c.mu_s * c.mu_s * fn_abs * fn_abs) {
-    sliding = true;
-  }
-  if (sliding && ft2 > c.mu_k * c.mu_k * fn_abs * fn_abs) {
+  const double kinetic_limit2 = c.mu_k * c.mu_k * fn_abs * fn_abs;
+  const bool sliding = ft2 > (h.sliding() ? kinetic_limit2 : c.mu_s * c.mu_s * fn_abs * fn_abs);
+  if (sliding && ft2 > kinetic_limit2) {
     ft *= c.mu_k * fn_abs / std::sqrt(ft2);
     // The spring keeps what the dashpot does not carry, so that F_t is continuous when it sticks again.
     s = c.kt > 0.0 ? -(ft + c_t * vt) / c.kt : Vec3{};
@@ -128,7 +126,7 @@ struct ContactForce {
         rolling_torque = mk;
       } else {
         rolling_torque = mk;
-        if (c.eta_r > 0.0) rolling_torque -= (c.eta_r * 2.0 * std::sqrt(b.rolling_inertia * kr)) * wr;
+        if (c.needs_rolling_inertia) rolling_torque -= (c.eta_r * 2.0 * std::sqrt(b.rolling_inertia * kr)) * wr;
       }
       h.rolling_spring = mk;
     }

@@ -56,7 +56,7 @@ struct ContactConstants {
   bool rolling_stiffness_from_kt = false;
   double eta_r = 0.0;
   double sqrt_kt_over_kn = 0.0;           // c_t = c_n sqrt(k_t / k_n): one square root per contact less
-  bool needs_rolling_inertia = false;     // EPSD with a dashpot
+  bool needs_rolling_inertia = false;     // EPSD with a dashpot (eta_r > 0)
   bool needs_spin_inertia = false;        // constant torque (its anti-chatter bound)
 };
 ContactConstants make_constants(const ContactLaw& law);

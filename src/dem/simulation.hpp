@@ -30,6 +30,21 @@ struct SimulationStats {
   std::int64_t steps = 0;
 };
 
+// The touching pairs of a stretch of a thread's block, gathered so that the contact law runs over
+// them as one vectorisable loop (structure of arrays, contact-major): see particle_contacts().
+struct ContactBatch {
+  static constexpr std::uint32_t kCapacity = 64;
+  alignas(64) std::uint32_t owner[kCapacity];
+  alignas(64) std::uint32_t partner[kCapacity];
+  alignas(64) std::uint32_t pair[kCapacity];
+  alignas(64) double separation[3][kCapacity];  // m, x_owner - x_partner (minimum image)
+  alignas(64) double overlap_ratio[kCapacity];  // overlap / smaller radius
+  alignas(64) double force[3][kCapacity];       // N, on the owner
+  alignas(64) double torque_owner[3][kCapacity], torque_partner[3][kCapacity];  // N m
+  alignas(64) double spring[3][kCapacity], rolling_spring[3][kCapacity];       // the new history
+  alignas(64) std::uint32_t flags[kCapacity];
+};
+
 class Simulation {
  public:
   Simulation(Particles particles, const ContactLaw& particle_law, SimulationSettings settings);
@@ -120,6 +135,7 @@ class Simulation {
     Vec3 force, torque;
   };
   std::vector<std::vector<PartnerShare>> deferred_;  // per thread: shares for later threads' particles
+  std::vector<ContactBatch> batches_;                 // one per thread
   std::vector<std::uint32_t> particles_near_walls_;
   std::vector<std::uint8_t> pair_active_;     // 1 while the pair touches
   std::vector<Vec3> position_at_build_;
