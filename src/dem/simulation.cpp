@@ -331,6 +331,88 @@ BatchLaw batch_law_for(const ContactConstants& c) {
     return damped ? contact_law_over_batch<2, false, true, true> : contact_law_over_batch<2, false, true, false>;
   return damped ? contact_law_over_batch<2, false, false, true> : contact_law_over_batch<2, false, false, false>;
 }
+
+// Where collect_touching() stopped: the owner and its next listed pair.
+struct PairCursor {
+  std::size_t owner;
+  std::uint32_t pair;
+};
+
+// Appends the touching pairs from `at` on to the empty batch until the batch is full or the
+// owners up to `end` are done; returns how many it appended. Every listed pair is written to the
+// batch and kept only when touching (no branch on touching, which is at random). A pair that
+// stopped touching forgets its history. A function of its own, with no call inside, so that its
+// few live values stay in registers.
+template <bool kPeriodic>
+std::uint32_t collect_touching(PairCursor& at, std::size_t end, const Vec3* __restrict x, const double* __restrict r,
+                               const std::uint32_t* __restrict first, const std::uint32_t* __restrict partner,
+                               std::uint8_t* __restrict active, ContactHistory* __restrict history,
+                               const Domain& dom, ContactBatch& __restrict batch) {
+  std::uint32_t count = 0;
+  for (std::size_t i = at.owner; i < end; ++i) {
+    const Vec3 xi = x[i];
+    const double ri = r[i];
+    const std::uint32_t last = first[i + 1];
+    for (std::uint32_t k = std::max(at.pair, first[i]); k < last; ++k) {
+      const std::uint32_t j = partner[k];
+      Vec3 d = xi - x[j];
+      if constexpr (kPeriodic) d = dom.minimum_image(d);
+      const double reach = ri + r[j];
+      const bool touching = norm2(d) < reach * reach;
+      if (active[k] > std::uint8_t(touching)) history[k].reset();  // rare: predictable
+      active[k] = touching;
+      batch.owner[count] = std::uint32_t(i);
+      batch.partner[count] = j;
+      batch.pair[count] = k;
+      batch.separation[0][count] = d.x;
+      batch.separation[1][count] = d.y;
+      batch.separation[2][count] = d.z;
+      count += touching ? 1u : 0u;
+      if (count == ContactBatch::kCapacity) {
+        at = {i, k + 1};
+        return count;
+      }
+    }
+  }
+  at = {end, 0};
+  return count;
+}
+
+// A thread's running sums for the owner whose pairs are being added (see particle_contacts).
+struct OwnerSums {
+  std::size_t owner;
+  Vec3 force, torque;
+};
+
+// Stores the batch's histories and adds its forces and torques in pair order: the partner's share
+// at once (or, for a partner at or beyond `end`, in `later`), the owner's summed until its last pair.
+void add_batch_shares(const ContactBatch& __restrict batch, std::uint32_t count, std::size_t end, Vec3* __restrict f,
+                      Vec3* __restrict t, ContactHistory* __restrict history, OwnerSums& sums,
+                      std::vector<Simulation::PartnerShare>& later, double& max_overlap) {
+  for (std::uint32_t q = 0; q < count; ++q) {
+    const std::uint32_t i = batch.owner[q], j = batch.partner[q];
+    if (i != sums.owner) {
+      f[sums.owner] += sums.force;
+      t[sums.owner] += sums.torque;
+      sums = {i, Vec3{}, Vec3{}};
+    }
+    max_overlap = std::max(max_overlap, batch.overlap_ratio[q]);
+    ContactHistory& h = history[batch.pair[q]];
+    h.tangential_spring = {batch.spring[0][q], batch.spring[1][q], batch.spring[2][q]};
+    h.rolling_spring = {batch.rolling_spring[0][q], batch.rolling_spring[1][q], batch.rolling_spring[2][q]};
+    h.flags = batch.flags[q];
+    const Vec3 force{batch.force[0][q], batch.force[1][q], batch.force[2][q]};
+    sums.force += force;
+    sums.torque += Vec3{batch.torque_owner[0][q], batch.torque_owner[1][q], batch.torque_owner[2][q]};
+    const Vec3 tj{batch.torque_partner[0][q], batch.torque_partner[1][q], batch.torque_partner[2][q]};
+    if (j < end) {
+      f[j] -= force;
+      t[j] += tj;
+    } else {
+      later.push_back({j, -force, tj});
+    }
+  }
+}
 }  // namespace
 
 // The pair kernel over the half list, contact-major. Particles are in cell order and each
@@ -380,69 +462,22 @@ void Simulation::particle_contacts() {
       t[i] = Vec3{};
     }
 
-    // The law over the batch's contacts, then their shares added in pair order. The owner's
-    // shares are summed first and added to it once its last pair is done (a batch may end within
-    // an owner's pairs): the same order of additions as a loop over the pairs owner by owner.
-    std::size_t owner = begin;
-    Vec3 owner_force{}, owner_torque{};
-    auto finish_owner = [&](std::size_t next_owner) {
-      f[owner] += owner_force;
-      t[owner] += owner_torque;
-      owner_force = owner_torque = Vec3{};
-      owner = next_owner;
-    };
-    auto run_batch = [&](std::uint32_t count) {
+    // Batch by batch: the touching pairs, the law over them, their shares. The owner's shares are
+    // summed and added once its last pair is done (a batch may end within an owner's pairs): the
+    // same order of additions as a loop over the pairs owner by owner.
+    PairCursor at{begin, 0};
+    OwnerSums sums{begin, Vec3{}, Vec3{}};
+    while (at.owner < end) {
+      const std::uint32_t count =
+          periodic ? collect_touching<true>(at, end, x, r, first, partner, active, history, dom, batch)
+                   : collect_touching<false>(at, end, x, r, first, partner, active, history, dom, batch);
       batch_law(batch, count, c, r, m, inv_i, v, w, history, dt);
-      for (std::uint32_t q = 0; q < count; ++q) {
-        const std::uint32_t i = batch.owner[q], j = batch.partner[q];
-        if (i != owner) finish_owner(i);
-        max_overlap = std::max(max_overlap, batch.overlap_ratio[q]);
-        ContactHistory& h = history[batch.pair[q]];
-        h.tangential_spring = {batch.spring[0][q], batch.spring[1][q], batch.spring[2][q]};
-        h.rolling_spring = {batch.rolling_spring[0][q], batch.rolling_spring[1][q], batch.rolling_spring[2][q]};
-        h.flags = batch.flags[q];
-        const Vec3 force{batch.force[0][q], batch.force[1][q], batch.force[2][q]};
-        owner_force += force;
-        owner_torque += Vec3{batch.torque_owner[0][q], batch.torque_owner[1][q], batch.torque_owner[2][q]};
-        const Vec3 tj{batch.torque_partner[0][q], batch.torque_partner[1][q], batch.torque_partner[2][q]};
-        if (j < end) {
-          f[j] -= force;
-          t[j] += tj;
-        } else {
-          later.push_back({j, -force, tj});
-        }
-      }
-    };
-
-    std::uint32_t count = 0;
-    for (std::size_t i = begin; i < end; ++i) {
-      const Vec3 xi = x[i];
-      const double ri = r[i];
-      for (std::uint32_t k = first[i]; k < first[i + 1]; ++k) {
-        const std::uint32_t j = partner[k];
-        Vec3 d = xi - x[j];
-        if (periodic) d = dom.minimum_image(d);
-        const double reach = ri + r[j];
-        const bool touching = norm2(d) < reach * reach;
-        // A pair that stopped touching forgets its history (rare: predictable).
-        if (active[k] > std::uint8_t(touching)) history[k].reset();
-        active[k] = touching;
-        // Written always, kept only when touching: no branch.
-        batch.owner[count] = std::uint32_t(i);
-        batch.partner[count] = j;
-        batch.pair[count] = k;
-        batch.separation[0][count] = d.x;
-        batch.separation[1][count] = d.y;
-        batch.separation[2][count] = d.z;
-        count += touching ? 1u : 0u;
-        if (count == ContactBatch::kCapacity) {
-          run_batch(count);
-          count = 0;
-        }
-      }
+      add_batch_shares(batch, count, end, f, t, history, sums, later, max_overlap);
     }
-    run_batch(count);
-    if (begin < end) finish_owner(end);
+    if (begin < end) {
+      f[sums.owner] += sums.force;
+      t[sums.owner] += sums.torque;
+    }
   }
   for (const auto& shares : deferred_) {
     for (const PartnerShare& s : shares) {

@@ -130,10 +130,14 @@ class Simulation {
   WallList wall_list_;
   HistoryArchive pending_history_;            // archived before particles were removed
   bool history_pending_ = false;
-  struct PartnerShare {
+
+ public:
+  struct PartnerShare {  // a pair's share for a partner in a later thread's block
     std::uint32_t particle;
     Vec3 force, torque;
   };
+
+ private:
   std::vector<std::vector<PartnerShare>> deferred_;  // per thread: shares for later threads' particles
   std::vector<ContactBatch> batches_;                 // one per thread
   std::vector<std::uint32_t> particles_near_walls_;
