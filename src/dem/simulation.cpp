@@ -82,6 +82,7 @@ void Simulation::add_particle(std::int64_t id, const Vec3& x, double radius, dou
 void Simulation::remove_particles(const std::vector<std::uint32_t>& indices) {
   if (indices.empty()) return;
   if (!history_pending_ && !pairs_.first.empty()) {
+    pairs_.history = pair_history();
     pending_history_.store_pairs(pairs_, p_.id);
     pending_history_.store_walls(wall_list_, p_.id);
     history_pending_ = true;
@@ -133,8 +134,30 @@ void Simulation::derive_list_caches() {
   particles_near_walls_.clear();
   for (std::uint32_t i = 0; i + 1 < wall_list_.first.size(); ++i)
     if (wall_list_.first[i + 1] > wall_list_.first[i]) particles_near_walls_.push_back(i);
-  pair_active_.resize(pairs_.size());
-  for (std::size_t k = 0; k < pairs_.size(); ++k) pair_active_[k] = pairs_.history[k].flags != 0 ? 1 : 0;
+  // The history moves from the list (per listed pair) into the compact form the step uses.
+  const std::size_t pair_count = pairs_.size();
+  pair_contact_.assign(pair_count, kNoContact);
+  contacts_.assign(pair_count + 1, ContactHistory{});
+  contacts_next_.assign(pair_count + 1, ContactHistory{});
+  for (std::size_t k = 0; k < pair_count; ++k) {
+    if (pairs_.history[k].flags == 0) continue;
+    pair_contact_[k] = static_cast<std::uint32_t>(k);
+    contacts_[k] = pairs_.history[k];
+  }
+  pairs_.history.clear();
+  pairs_.history.shrink_to_fit();
+}
+
+std::vector<ContactHistory> Simulation::pair_history() const {
+  std::vector<ContactHistory> history(pairs_.size());
+  for (std::size_t k = 0; k < pair_contact_.size(); ++k)
+    if (pair_contact_[k] != kNoContact) history[k] = contacts_[pair_contact_[k]];
+  return history;
+}
+
+PairList Simulation::pairs() const {
+  PairList copy{pairs_.first, pairs_.partner, pair_history()};
+  return copy;
 }
 
 void Simulation::integrate_positions() {
@@ -217,6 +240,7 @@ void Simulation::rebuild_lists() {
     archive = std::move(pending_history_);
     history_pending_ = false;
   } else {
+    pairs_.history = pair_history();
     archive.store_pairs(pairs_, p_.id);
     archive.store_walls(wall_list_, p_.id);
   }
@@ -287,7 +311,7 @@ void contact_law_over_batch(ContactBatch& batch, std::uint32_t count, ContactCon
                             ? 1.0 / (1.0 / (1.0 / inv_ii + mi * ri * ri) + 1.0 / (1.0 / inv_ij + mj * rj * rj))
                             : 0.0;
     b.spin_inertia = c.needs_spin_inertia ? 1.0 / (inv_ii + inv_ij) : 0.0;
-    ContactHistory h = history[batch.pair[q]];
+    ContactHistory h = history[batch.history_in[q]];
     const ContactForce cf = contact_force(c, b, normal, overlap, v[i] - v[j], w[i], w[j], h, dt);
     const Vec3 n_x_ft = cross(normal, cf.tangential);
     const Vec3 ti = cf.rolling_torque - b.arm_i * n_x_ft;
@@ -341,13 +365,16 @@ struct PairCursor {
 // Appends the touching pairs from `at` on to the empty batch until the batch is full or the
 // owners up to `end` are done; returns how many it appended. Every listed pair is written to the
 // batch and kept only when touching (no branch on touching, which is at random). A pair that
-// stopped touching forgets its history. A function of its own, with no call inside, so that its
-// few live values stay in registers.
+// stopped touching loses its history (its index becomes kNoContact); one that has just formed
+// reads the empty entry `no_history`. `next_contact` is where the next contact's history goes. A
+// function of its own, with no call inside, so that its few live values stay in registers.
 template <bool kPeriodic>
 std::uint32_t collect_touching(PairCursor& at, std::size_t end, const Vec3* __restrict x, const double* __restrict r,
                                const std::uint32_t* __restrict first, const std::uint32_t* __restrict partner,
-                               std::uint8_t* __restrict active, ContactHistory* __restrict history,
-                               const Domain& dom, ContactBatch& __restrict batch) {
+                               std::uint32_t* __restrict pair_contact, std::uint32_t no_history,
+                               std::uint32_t& next_contact, const Domain& dom, ContactBatch& __restrict batch) {
+  constexpr std::uint32_t kNoContact = ~0u;
+  std::uint32_t next = next_contact;
   std::uint32_t count = 0;
   for (std::size_t i = at.owner; i < end; ++i) {
     const Vec3 xi = x[i];
@@ -359,22 +386,26 @@ std::uint32_t collect_touching(PairCursor& at, std::size_t end, const Vec3* __re
       if constexpr (kPeriodic) d = dom.minimum_image(d);
       const double reach = ri + r[j];
       const bool touching = norm2(d) < reach * reach;
-      if (active[k] > std::uint8_t(touching)) history[k].reset();  // rare: predictable
-      active[k] = touching;
+      const std::uint32_t last_step = pair_contact[k];
+      pair_contact[k] = touching ? next : kNoContact;
       batch.owner[count] = std::uint32_t(i);
       batch.partner[count] = j;
-      batch.pair[count] = k;
+      batch.history_in[count] = last_step == kNoContact ? no_history : last_step;
+      batch.history_out[count] = next;
       batch.separation[0][count] = d.x;
       batch.separation[1][count] = d.y;
       batch.separation[2][count] = d.z;
       count += touching ? 1u : 0u;
+      next += touching ? 1u : 0u;
       if (count == ContactBatch::kCapacity) {
         at = {i, k + 1};
+        next_contact = next;
         return count;
       }
     }
   }
   at = {end, 0};
+  next_contact = next;
   return count;
 }
 
@@ -397,7 +428,7 @@ void add_batch_shares(const ContactBatch& __restrict batch, std::uint32_t count,
       sums = {i, Vec3{}, Vec3{}};
     }
     max_overlap = std::max(max_overlap, batch.overlap_ratio[q]);
-    ContactHistory& h = history[batch.pair[q]];
+    ContactHistory& h = history[batch.history_out[q]];
     h.tangential_spring = {batch.spring[0][q], batch.spring[1][q], batch.spring[2][q]};
     h.rolling_spring = {batch.rolling_spring[0][q], batch.rolling_spring[1][q], batch.rolling_spring[2][q]};
     h.flags = batch.flags[q];
@@ -442,8 +473,10 @@ void Simulation::particle_contacts() {
   Vec3* t = p_.torque.data();
   const std::uint32_t* first = pairs_.first.data();
   const std::uint32_t* partner = pairs_.partner.data();
-  ContactHistory* history = pairs_.history.data();
-  std::uint8_t* active = pair_active_.data();
+  std::uint32_t* pair_contact = pair_contact_.data();
+  const ContactHistory* history = contacts_.data();
+  ContactHistory* next_history = contacts_next_.data();
+  const auto no_history = static_cast<std::uint32_t>(pairs_.size());  // the empty last entry
   const int threads = omp_get_max_threads();
   deferred_.resize(std::size_t(threads));
   batches_.resize(std::size_t(threads));
@@ -466,13 +499,16 @@ void Simulation::particle_contacts() {
     // summed and added once its last pair is done (a batch may end within an owner's pairs): the
     // same order of additions as a loop over the pairs owner by owner.
     PairCursor at{begin, 0};
+    std::uint32_t next_contact = first[begin];  // this block's part of next_history
     OwnerSums sums{begin, Vec3{}, Vec3{}};
     while (at.owner < end) {
       const std::uint32_t count =
-          periodic ? collect_touching<true>(at, end, x, r, first, partner, active, history, dom, batch)
-                   : collect_touching<false>(at, end, x, r, first, partner, active, history, dom, batch);
+          periodic ? collect_touching<true>(at, end, x, r, first, partner, pair_contact, no_history, next_contact,
+                                            dom, batch)
+                   : collect_touching<false>(at, end, x, r, first, partner, pair_contact, no_history, next_contact,
+                                             dom, batch);
       batch_law(batch, count, c, r, m, inv_i, v, w, history, dt);
-      add_batch_shares(batch, count, end, f, t, history, sums, later, max_overlap);
+      add_batch_shares(batch, count, end, f, t, next_history, sums, later, max_overlap);
     }
     if (begin < end) {
       f[sums.owner] += sums.force;
@@ -485,6 +521,7 @@ void Simulation::particle_contacts() {
       t[s.particle] += s.torque;
     }
   }
+  contacts_.swap(contacts_next_);
   max_overlap_seen_ = max_overlap;
 }
 
@@ -667,7 +704,7 @@ void Simulation::check_stability() const {
 }
 
 Simulation::ListState Simulation::list_state() const {
-  return {pairs_, wall_list_, position_at_build_, wall_displacement_at_build_, rebuilds_since_reorder_};
+  return {pairs(), wall_list_, position_at_build_, wall_displacement_at_build_, rebuilds_since_reorder_};
 }
 
 void Simulation::restore(double time, const SimulationStats& stats, ListState lists) {
@@ -708,7 +745,7 @@ double Simulation::potential_energy(double reference_height) const {
 
 std::size_t Simulation::contact_count() const {
   std::size_t c = 0;
-  for (const ContactHistory& h : pairs_.history) c += h.touching() ? 1 : 0;
+  for (std::uint32_t slot : pair_contact_) c += slot != kNoContact ? 1 : 0;
   return c;
 }
 

@@ -36,7 +36,8 @@ struct ContactBatch {
   static constexpr std::uint32_t kCapacity = 64;
   alignas(64) std::uint32_t owner[kCapacity];
   alignas(64) std::uint32_t partner[kCapacity];
-  alignas(64) std::uint32_t pair[kCapacity];
+  alignas(64) std::uint32_t history_in[kCapacity];   // index of the pair's history of the last step
+  alignas(64) std::uint32_t history_out[kCapacity];  // where this step's goes
   alignas(64) double separation[3][kCapacity];  // m, x_owner - x_partner (minimum image)
   alignas(64) double overlap_ratio[kCapacity];  // overlap / smaller radius
   alignas(64) double force[3][kCapacity];       // N, on the owner
@@ -70,7 +71,7 @@ class Simulation {
   Particles& particles_mutable() { invalidate_lists(); return p_; }
   const ContactLaw& particle_law() const { return law_; }
   const SimulationSettings& settings() const { return settings_; }
-  const PairList& pairs() const { return pairs_; }
+  PairList pairs() const;  // a copy, with each listed pair's contact history
   const WallList& wall_candidates() const { return wall_list_; }
   const SimulationStats& stats() const { return stats_; }
   double time() const { return time_; }
@@ -141,7 +142,15 @@ class Simulation {
   std::vector<std::vector<PartnerShare>> deferred_;  // per thread: shares for later threads' particles
   std::vector<ContactBatch> batches_;                 // one per thread
   std::vector<std::uint32_t> particles_near_walls_;
-  std::vector<std::uint8_t> pair_active_;     // 1 while the pair touches
+  // The touching pairs' contact histories, compact (the lists' per-pair history array is mostly
+  // pairs that do not touch): pair_contact_[k] is pair k's index into contacts_, or kNoContact.
+  // Each step writes them anew, in pair order, into contacts_next_ and swaps: a thread's block
+  // writes from index first[begin] of the pair list on. The last entry of both stays empty: it is
+  // where a contact that has just formed reads its history from.
+  static constexpr std::uint32_t kNoContact = ~0u;
+  std::vector<std::uint32_t> pair_contact_;
+  std::vector<ContactHistory> contacts_, contacts_next_;
+  std::vector<ContactHistory> pair_history() const;  // per listed pair, from the compact form
   std::vector<Vec3> position_at_build_;
   std::vector<Vec3> wall_displacement_at_build_;
   bool lists_valid_ = false;
