@@ -35,7 +35,7 @@ struct CaseSummary {
   // Zone of influence (surface settlement above a fraction of the travel).
   double zone_surface = kMissing;      // m
   double zone_mid_height = kMissing;   // m
-  double shape_ratio = kMissing;       // surface / mid-height width
+  double shape_ratio = kMissing;       // zone width at mid-height / B (~1 columnar, > 1.3 elliptical)
   std::string shape;                   // "elliptical", "chimney", ... as the analysis calls it
   // Ground reaction curve: the trapdoor's stress over its value before lowering.
   double min_load_ratio = kMissing;    // the least (maximum arching)

@@ -18,6 +18,32 @@ std::string join_labels(const std::vector<std::string>& labels) {
 
 }  // namespace
 
+std::string describe_shapes(const std::vector<CaseSummary>& cases) {
+  // Shapes in order of first appearance, each with its cases.
+  std::vector<std::pair<std::string, std::vector<std::string>>> groups;
+  std::vector<std::string> unknown;
+  for (const CaseSummary& c : cases) {
+    if (c.shape.empty() || c.shape == "unknown") {
+      unknown.push_back(c.label);
+      continue;
+    }
+    auto it = std::find_if(groups.begin(), groups.end(), [&](const auto& g) { return g.first == c.shape; });
+    if (it == groups.end()) groups.push_back({c.shape, {}}), it = groups.end() - 1;
+    it->second.push_back(c.label);
+  }
+  const std::string missing = unknown.empty() ? "" : fmt::format(" (Not measured in {}.)", join_labels(unknown));
+  const std::string rule = "(the shape ratio, the zone's width at mid-height over B: below 1.3 columnar, else elliptical)";
+  if (groups.empty()) return "The shape of the zone of influence was not measured in any case.";
+  if (groups.size() == 1)
+    return fmt::format("The zone of influence is {} in every case{} {}.{}", groups[0].first,
+                       unknown.empty() ? "" : " that measured it", rule, missing);
+  std::string parts;
+  for (std::size_t k = 0; k < groups.size(); ++k)
+    parts += fmt::format("{}{} in {}", k == 0 ? "" : (k + 1 == groups.size() ? " and " : ", "), groups[k].first,
+                         join_labels(groups[k].second));
+  return fmt::format("The zone of influence is {} {}.{}", parts, rule, missing);
+}
+
 std::string describe_trend(const std::string& quantity, const std::vector<std::string>& labels,
                            const std::vector<double>& values, double tolerance,
                            const std::function<std::string(double)>& format) {
@@ -98,9 +124,7 @@ std::vector<std::string> study_findings(const std::vector<CaseSummary>& cases, d
   out.push_back(describe_trend("The zone of influence at mid-height", labels,
                                values([](const CaseSummary& c) { return c.zone_mid_height / c.trapdoor_width; }), 0.1,
                                over_b));
-  out.push_back(describe_trend("The shape ratio (surface over mid-height width)", labels,
-                               values([](const CaseSummary& c) { return c.shape_ratio; }), 0.05,
-                               [](double x) { return fmt::format("{:.2f}", x); }));
+  out.push_back(describe_shapes(cases));
   out.push_back(describe_trend("The least trapdoor load (maximum arching), as a fraction of the load before lowering,",
                                labels, values([](const CaseSummary& c) { return c.min_load_ratio; }), 0.02,
                                [](double x) { return fmt::format("{:.3f}", x); }));

@@ -17,6 +17,9 @@ std::string describe_trend(const std::string& quantity, const std::vector<std::s
                            const std::vector<double>& values, double tolerance,
                            const std::function<std::string(double)>& format);
 
+// Which cases' zone of influence is columnar and which elliptical (the analysis's classification).
+std::string describe_shapes(const std::vector<CaseSummary>& cases);
+
 // The sentences the report lists: the mechanism metrics, the arching, and the sinkhole estimates.
 std::vector<std::string> study_findings(const std::vector<CaseSummary>& cases, double angle_of_draw_deg);
 

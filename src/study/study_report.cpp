@@ -193,16 +193,16 @@ fs::path write_study_report(const fs::path& dir, const StudyReportInput& in) {
 
   h += "<h2>Mechanism metrics</h2>\n<div class=\"scroll\"><table>\n<tr><th class=\"l\">case</th><th>δ/B</th>"
        "<th>band angle to the vertical (°) mean (left / right)</th><th>height reached / B</th><th>band width (d)</th>"
-       "<th>zone at surface / B</th><th>zone at mid-height / B</th><th>shape ratio</th><th>least trapdoor load</th>"
+       "<th>zone at surface / B</th><th>zone at mid-height / B = shape ratio</th><th>shape</th><th>least trapdoor load</th>"
        "<th>at δ/B</th><th>final trapdoor load</th></tr>\n";
   for (const CaseSummary& s : summaries) {
     const double b = s.trapdoor_width;
     h += fmt::format("<tr><td class=\"l\">{}</td><td>{}</td><td>{} ({} / {})</td><td>{}</td><td>{}</td><td>{}</td>"
-                     "<td>{}</td><td>{} {}</td><td>{}</td><td>{}</td><td>{}</td></tr>\n",
+                     "<td>{}</td><td class=\"l\">{}</td><td>{}</td><td>{}</td><td>{}</td></tr>\n",
                      html_escape(s.label), cell(s.travel / b, "{:.2f}"), cell(s.band_angle_deg, "{:.1f}"),
                      cell(s.band_angle_left_deg, "{:.1f}"), cell(s.band_angle_right_deg, "{:.1f}"),
                      cell(s.band_height / b, "{:.2f}"), cell(s.band_width_d, "{:.1f}"), cell(s.zone_surface / b, "{:.2f}"),
-                     cell(s.zone_mid_height / b, "{:.2f}"), cell(s.shape_ratio, "{:.2f}"), html_escape(s.shape),
+                     cell(s.shape_ratio, "{:.2f}"), html_escape(s.shape),
                      cell(s.min_load_ratio, "{:.3f}"), cell(s.min_load_at_over_b, "{:.3f}"),
                      cell(s.final_load_ratio, "{:.3f}"));
   }

@@ -81,3 +81,17 @@ TEST(ParameterDifferences, OnlyKeysThatDifferInFirstSeenOrder) {
   EXPECT_EQ(d[1].key, "contact.extra");
   EXPECT_EQ(d[1].values, (std::vector<std::string>{"—", "1"}));
 }
+
+TEST(Findings, ShapesGroupTheCases) {
+  std::vector<CaseSummary> cases(4);
+  const char* shapes[] = {"elliptical", "elliptical", "columnar", "unknown"};
+  for (int k = 0; k < 4; ++k) {
+    cases[k].label = kLabels[k];
+    cases[k].shape = shapes[k];
+  }
+  EXPECT_EQ(describe_shapes(cases),
+            "The zone of influence is elliptical in Calibrated and RF1 and columnar in RF2 (the shape ratio, the zone's "
+            "width at mid-height over B: below 1.3 columnar, else elliptical). (Not measured in RF3.)");
+  cases.resize(2);
+  EXPECT_EQ(describe_shapes(cases).rfind("The zone of influence is elliptical in every case (", 0), 0u);
+}
