@@ -114,14 +114,12 @@ void Simulation::run(std::int64_t steps) {
 void Simulation::step() {
   if (!setup_done_) {  // forces of the initial state, so the first half kick sees them
     rebuild_lists();
-    particle_contacts();
-    wall_contacts();
+    contacts();
     setup_done_ = true;
   }
   integrate_positions();
   update_neighbours_if_needed();
-  particle_contacts();
-  wall_contacts();
+  contacts();
   integrate_velocities();
   ++stats_.steps;
   check_stability();
@@ -420,7 +418,7 @@ std::uint32_t collect_touching(PairCursor& at, std::size_t end, const Vec3* __re
   return count;
 }
 
-// A thread's running sums for the owner whose pairs are being added (see particle_contacts).
+// A thread's running sums for the owner whose pairs are being added (see Simulation::contacts).
 struct OwnerSums {
   std::size_t owner;
   Vec3 force, torque;
@@ -468,7 +466,10 @@ void add_batch_shares(const ContactBatch& __restrict batch, std::uint32_t count,
 // receives its share after the loop, from a per-thread list, in thread order. The sums are
 // therefore the same every time for a given thread count; another thread count changes only the
 // order of a few additions (round-off).
-void Simulation::particle_contacts() {
+// The wall contacts of the block's particles are added in the same sweep, as soon as a particle's
+// pairs are all done (its data is still in cache then; a pass of its own re-read it from memory at
+// 80k particles). Each thread sums its own wall loads; the threads' sums are added in thread order.
+void Simulation::contacts() {
   const std::size_t n = p_.size();
   const ContactConstants c = constants_;
   const Domain dom = settings_.domain;
@@ -492,6 +493,10 @@ void Simulation::particle_contacts() {
   deferred_.resize(std::size_t(threads));
   batches_.resize(std::size_t(threads));
   const BatchLaw batch_law = batch_law_for(c);
+  const std::size_t n_walls = walls_.size();
+  wall_loads_.assign(std::size_t(threads) * n_walls * 2, Vec3{});  // force, torque per thread and wall
+  const std::uint32_t* near_walls = particles_near_walls_.data();
+  const std::uint32_t* near_walls_end = near_walls + particles_near_walls_.size();
   double max_overlap = 0.0;
 #pragma omp parallel reduction(max : max_overlap)
   {
@@ -500,6 +505,13 @@ void Simulation::particle_contacts() {
     const std::size_t end = n * std::size_t(me + 1) / std::size_t(team);
     std::vector<PartnerShare>& later = deferred_[std::size_t(me)];
     ContactBatch& batch = batches_[std::size_t(me)];
+    Vec3* my_wall_loads = wall_loads_.data() + std::size_t(me) * n_walls * 2;
+    // The block's particles with walls within reach, in index order.
+    const std::uint32_t* next_near_wall = std::lower_bound(near_walls, near_walls_end, std::uint32_t(begin));
+    auto walls_before = [&](std::size_t done) {  // the wall contacts of the particles before `done`
+      for (; next_near_wall != near_walls_end && *next_near_wall < done; ++next_near_wall)
+        wall_contacts_of(*next_near_wall, my_wall_loads, max_overlap);
+    };
     later.clear();
     for (std::size_t i = begin; i < end; ++i) {
       f[i] = Vec3{};
@@ -520,11 +532,13 @@ void Simulation::particle_contacts() {
                                              dom, batch, v, w, n);
       batch_law(batch, count, c, r, m, inv_i, v, w, history, dt);
       add_batch_shares(batch, count, end, f, t, next_history, sums, later, max_overlap);
+      walls_before(sums.owner);  // the particles before the current owner have all their pair shares
     }
     if (begin < end) {
       f[sums.owner] += sums.force;
       t[sums.owner] += sums.torque;
     }
+    walls_before(end);
   }
   for (const auto& shares : deferred_) {
     for (const PartnerShare& s : shares) {
@@ -534,92 +548,73 @@ void Simulation::particle_contacts() {
   }
   contacts_.swap(contacts_next_);
   max_overlap_seen_ = max_overlap;
+  for (std::size_t k = 0; k < n_walls; ++k) {
+    walls_[k].force = Vec3{};
+    walls_[k].torque = Vec3{};
+    for (int th = 0; th < threads; ++th) {
+      walls_[k].force += wall_loads_[(std::size_t(th) * n_walls + k) * 2];
+      walls_[k].torque += wall_loads_[(std::size_t(th) * n_walls + k) * 2 + 1];
+    }
+  }
 }
 
-// The walls, for the particles that have walls within reach. Each thread sums the wall loads of
-// its own particles; the threads' sums are added in thread order.
-void Simulation::wall_contacts() {
-  const std::size_t n_walls = walls_.size();
-  const double dt = dt_;
+// The wall contacts of particle i (which has walls within reach), added to its force and torque
+// and to the thread's wall loads `load` (force, torque per wall).
+void Simulation::wall_contacts_of(std::uint32_t i, Vec3* load, double& max_overlap) {
   const Vec3* x = p_.position.data();
   const Vec3* v = p_.velocity.data();
   const Vec3* w = p_.angular_velocity.data();
   const double* r = p_.radius.data();
   const double* m = p_.mass.data();
   const double* inv_i = p_.inv_inertia.data();
-  Vec3* f = p_.force.data();
-  Vec3* t = p_.torque.data();
-  const std::uint32_t* wfirst = wall_list_.first.data();
   const std::uint32_t* wall_of = wall_list_.wall.data();
   ContactHistory* whist = wall_list_.history.data();
   Vec3* wforce = wall_list_.force.data();
   const Wall* walls = walls_.data();
   const ContactConstants* wc = wall_constants_.data();
-  const std::uint32_t* near_walls = particles_near_walls_.data();
-  const std::size_t n_near = particles_near_walls_.size();
 
-  const int threads = omp_get_max_threads();
-  std::vector<Vec3> load(std::size_t(threads) * n_walls * 2, Vec3{});  // force, torque per thread and wall
-  double max_overlap = max_overlap_seen_;
-#pragma omp parallel reduction(max : max_overlap)
-  {
-    Vec3* my_load = load.data() + std::size_t(omp_get_thread_num()) * n_walls * 2;
-#pragma omp for schedule(static)
-    for (std::size_t q = 0; q < n_near; ++q) {
-      const std::uint32_t i = near_walls[q];
-      Vec3 fi{}, ti{};
-      const std::uint32_t k0 = wfirst[i], count = wfirst[i + 1] - k0;
-      WallProximity near[kMaxWallCandidates];
-      bool touching[kMaxWallCandidates];
-      std::uint32_t touching_count = 0;
-      for (std::uint32_t c = 0; c < count; ++c) {
-        near[c] = wall_proximity(walls[wall_of[k0 + c]], x[i]);
-        touching[c] = near[c].distance < r[i];
-        touching_count += touching[c] ? 1 : 0;
-      }
-      const bool several = touching_count > 1;
-      for (std::uint32_t c = 0; c < count; ++c) {
-        const std::uint32_t k = k0 + c;
-        const Wall& wall = walls[wall_of[k]];
-        const double overlap = r[i] - near[c].distance;
-        if (!touching[c] ||
-            (several && edge_contact_hidden(c, near, touching, count,
-                                            [&](std::size_t b) -> const Wall& { return walls[wall_of[k0 + b]]; },
-                                            1e-6 * r[i]))) {
-          if (whist[k].flags != 0) whist[k].reset();
-          wforce[k] = Vec3{};
-          continue;
-        }
-        max_overlap = std::max(max_overlap, overlap / r[i]);
-        ContactBodies b;
-        b.effective_mass = m[i];
-        b.arm_i = near[c].distance;
-        b.arm_j = 0.0;
-        b.lever = r[i];
-        const double inertia = 1.0 / inv_i[i];
-        b.rolling_inertia = inertia + m[i] * r[i] * r[i];
-        b.spin_inertia = inertia;
-        const ContactForce cf = contact_force(wc[wall_of[k]], b, near[c].normal, overlap,
-                                              v[i] - wall.current_velocity, w[i], Vec3{}, whist[k], dt);
-        fi += cf.force;
-        ti += cf.rolling_torque - b.arm_i * cross(near[c].normal, cf.tangential);
-        wforce[k] = cf.force;
-        my_load[2 * wall_of[k]] -= cf.force;
-        my_load[2 * wall_of[k] + 1] -= cross(near[c].point - wall.origin, cf.force);
-      }
-      f[i] += fi;
-      t[i] += ti;
-    }
+  Vec3 fi{}, ti{};
+  const std::uint32_t k0 = wall_list_.first[i], count = wall_list_.first[i + 1] - k0;
+  WallProximity near[kMaxWallCandidates];
+  bool touching[kMaxWallCandidates];
+  std::uint32_t touching_count = 0;
+  for (std::uint32_t c = 0; c < count; ++c) {
+    near[c] = wall_proximity(walls[wall_of[k0 + c]], x[i]);
+    touching[c] = near[c].distance < r[i];
+    touching_count += touching[c] ? 1 : 0;
   }
-  max_overlap_seen_ = max_overlap;
-  for (std::size_t k = 0; k < n_walls; ++k) {
-    walls_[k].force = Vec3{};
-    walls_[k].torque = Vec3{};
-    for (int th = 0; th < threads; ++th) {
-      walls_[k].force += load[(std::size_t(th) * n_walls + k) * 2];
-      walls_[k].torque += load[(std::size_t(th) * n_walls + k) * 2 + 1];
+  const bool several = touching_count > 1;
+  for (std::uint32_t c = 0; c < count; ++c) {
+    const std::uint32_t k = k0 + c;
+    const Wall& wall = walls[wall_of[k]];
+    const double overlap = r[i] - near[c].distance;
+    if (!touching[c] ||
+        (several && edge_contact_hidden(c, near, touching, count,
+                                        [&](std::size_t b) -> const Wall& { return walls[wall_of[k0 + b]]; },
+                                        1e-6 * r[i]))) {
+      if (whist[k].flags != 0) whist[k].reset();
+      wforce[k] = Vec3{};
+      continue;
     }
+    max_overlap = std::max(max_overlap, overlap / r[i]);
+    ContactBodies b;
+    b.effective_mass = m[i];
+    b.arm_i = near[c].distance;
+    b.arm_j = 0.0;
+    b.lever = r[i];
+    const double inertia = 1.0 / inv_i[i];
+    b.rolling_inertia = inertia + m[i] * r[i] * r[i];
+    b.spin_inertia = inertia;
+    const ContactForce cf = contact_force(wc[wall_of[k]], b, near[c].normal, overlap, v[i] - wall.current_velocity,
+                                          w[i], Vec3{}, whist[k], dt_);
+    fi += cf.force;
+    ti += cf.rolling_torque - b.arm_i * cross(near[c].normal, cf.tangential);
+    wforce[k] = cf.force;
+    load[2 * wall_of[k]] -= cf.force;
+    load[2 * wall_of[k] + 1] -= cross(near[c].point - wall.origin, cf.force);
   }
+  p_.force[i] += fi;
+  p_.torque[i] += ti;
 }
 
 void Simulation::integrate_velocities() {

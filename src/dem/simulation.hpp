@@ -31,7 +31,7 @@ struct SimulationStats {
 };
 
 // The touching pairs of a stretch of a thread's block, gathered so that the contact law runs over
-// them as one vectorisable loop (structure of arrays, contact-major): see particle_contacts().
+// them as one vectorisable loop (structure of arrays, contact-major): see Simulation::contacts().
 struct ContactBatch {
   static constexpr std::uint32_t kCapacity = 64;
   alignas(64) std::uint32_t owner[kCapacity];
@@ -109,8 +109,8 @@ class Simulation {
   void integrate_positions();
   void update_neighbours_if_needed();
   void rebuild_lists();
-  void particle_contacts();
-  void wall_contacts();
+  void contacts();  // particle pairs and walls
+  void wall_contacts_of(std::uint32_t i, Vec3* load, double& max_overlap);
   void integrate_velocities();
   void check_stability() const;
   void invalidate_lists() { lists_valid_ = false; }
@@ -141,7 +141,8 @@ class Simulation {
  private:
   std::vector<std::vector<PartnerShare>> deferred_;  // per thread: shares for later threads' particles
   std::vector<ContactBatch> batches_;                 // one per thread
-  std::vector<std::uint32_t> particles_near_walls_;
+  std::vector<std::uint32_t> particles_near_walls_;  // ascending
+  std::vector<Vec3> wall_loads_;                     // per thread and wall: force, torque
   // The touching pairs' contact histories, compact (the lists' per-pair history array is mostly
   // pairs that do not touch): pair_contact_[k] is pair k's index into contacts_, or kNoContact.
   // Each step writes them anew, in pair order, into contacts_next_ and swaps: a thread's block
