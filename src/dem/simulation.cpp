@@ -183,9 +183,11 @@ void Simulation::integrate_positions() {
   // and will be rebuilt anyway.
   const bool track = lists_valid_ && position_at_build_.size() == n;
   const Vec3* x0 = position_at_build_.data();
+  // Whether any particle left is a flag here (a reduction the loop vectorises with); which one,
+  // only when one did.
   double max_d2 = 0.0;
-  std::int64_t escaped = kNone;
-#pragma omp parallel for schedule(static) reduction(max : max_d2) reduction(min : escaped)
+  int outside = 0;
+#pragma omp parallel for simd schedule(static) reduction(max : max_d2) reduction(| : outside)
   for (std::size_t i = 0; i < n; ++i) {
     v[i] += half * (f[i] * inv_m[i] + g);
     x[i] += dt * v[i];
@@ -193,10 +195,18 @@ void Simulation::integrate_positions() {
     if (track) max_d2 = std::max(max_d2, norm2(x[i] - x0[i]));
     const bool inside = x[i].x >= lo.x && x[i].x <= hi.x && x[i].y >= lo.y && x[i].y <= hi.y && x[i].z >= lo.z &&
                         x[i].z <= hi.z;  // false for NaN too
-    if (!inside) escaped = std::min<std::int64_t>(escaped, std::int64_t(i));
+    outside |= inside ? 0 : 1;
   }
   max_displacement2_ = max_d2;
-  escaped_particle_ = escaped == kNone ? -1 : escaped;
+  escaped_particle_ = -1;
+  for (std::size_t i = 0; outside && i < n; ++i) {
+    const bool inside = x[i].x >= lo.x && x[i].x <= hi.x && x[i].y >= lo.y && x[i].y <= hi.y && x[i].z >= lo.z &&
+                        x[i].z <= hi.z;
+    if (!inside) {
+      escaped_particle_ = std::int64_t(i);
+      break;
+    }
+  }
 
   for (Wall& wall : walls_) {
     wall.current_velocity = wall.velocity ? wall.velocity(time_ + half) : Vec3{};
@@ -628,14 +638,20 @@ void Simulation::integrate_velocities() {
   const Vec3* t = p_.torque.data();
   const double* inv_m = p_.inv_mass.data();
   const double* inv_i = p_.inv_inertia.data();
-  std::int64_t bad = kNone;
-#pragma omp parallel for schedule(static) reduction(min : bad)
+  int any_bad = 0;  // as in integrate_positions: a flag, then which particle
+#pragma omp parallel for simd schedule(static) reduction(| : any_bad)
   for (std::size_t i = 0; i < n; ++i) {
     v[i] += half * (f[i] * inv_m[i] + g);
     if (rotate) w[i] += (half * inv_i[i]) * t[i];
-    if (!is_finite(v[i]) || !is_finite(w[i])) bad = std::min<std::int64_t>(bad, std::int64_t(i));
+    any_bad |= is_finite(v[i]) && is_finite(w[i]) ? 0 : 1;
   }
-  bad_particle_ = bad == kNone ? -1 : bad;
+  bad_particle_ = -1;
+  for (std::size_t i = 0; any_bad && i < n; ++i) {
+    if (!is_finite(v[i]) || !is_finite(w[i])) {
+      bad_particle_ = std::int64_t(i);
+      break;
+    }
+  }
 }
 
 std::string Simulation::describe_particle(std::uint32_t i) const {
