@@ -3,6 +3,7 @@
 // matching the truth), piv.h5 with the datasets of docs/piv.md and the figures; bad input is an
 // InputError with a clear message, which the binary turns into exit code 2.
 #include <gtest/gtest.h>
+#include <unistd.h>
 
 #include <sys/wait.h>
 
@@ -53,8 +54,10 @@ std::vector<std::map<std::string, std::string>> read_truth(const fs::path& file)
   return rows;
 }
 
+// Per process: ctest runs the tests of one fixture as parallel processes, which would otherwise
+// remove each other's folders (a fixture's tests share a name).
 fs::path fresh_dir(const std::string& name) {
-  const fs::path dir = fs::temp_directory_path() / ("trapdem_piv_command_" + name);
+  const fs::path dir = fs::temp_directory_path() / ("trapdem_piv_command_" + name + "_" + std::to_string(::getpid()));
   fs::remove_all(dir);
   fs::create_directories(dir);
   return dir;
