@@ -10,22 +10,14 @@
 #include <opencv2/imgproc.hpp>
 
 #include "dem/errors.hpp"
+#include "piv_test_support.hpp"
 #include "piv/run_piv.hpp"
 #include "piv/speckle_synthesis.hpp"
 
 namespace trapdem {
 namespace {
 
-// Runs `f`, expects an InputError whose message contains `fragment`.
-template <class F>
-void expect_input_error(F f, const std::string& fragment) {
-  try {
-    f();
-    ADD_FAILURE() << "no InputError; expected one mentioning '" << fragment << "'";
-  } catch (const InputError& e) {
-    EXPECT_NE(std::string(e.what()).find(fragment), std::string::npos) << "message: " << e.what();
-  }
-}
+using test::expect_input_error;
 
 std::vector<cv::Mat> small_pair() {
   SpeckleSettings s;

@@ -20,11 +20,14 @@
 #include <opencv2/imgproc.hpp>
 
 #include "dem/errors.hpp"
+#include "piv_test_support.hpp"
 #include "io/hdf5_file.hpp"
 #include "piv_command.hpp"
 
 namespace trapdem {
 namespace {
+
+using test::expect_input_error;
 
 namespace fs = std::filesystem;
 
@@ -75,16 +78,6 @@ fs::path synth_rigid(const std::string& name) {
   o.seed = 7;
   EXPECT_EQ(app::run_synth_command(o), 0);
   return o.out;
-}
-
-template <class F>
-void expect_input_error(F f, const std::string& fragment) {
-  try {
-    f();
-    ADD_FAILURE() << "no InputError; expected one mentioning '" << fragment << "'";
-  } catch (const InputError& e) {
-    EXPECT_NE(std::string(e.what()).find(fragment), std::string::npos) << "message: " << e.what();
-  }
 }
 
 TEST(PivCommand, SynthWritesImagesAndTruth) {

@@ -1,15 +1,30 @@
 #pragma once
 // Shared helpers of the PIV tests: error statistics over the valid subsets, printed next to
-// their tolerance so the test log shows the margin.
+// their tolerance so the test log shows the margin; the check that bad input is a clear error.
 #include <cmath>
 #include <cstdio>
 #include <functional>
+#include <string>
 #include <vector>
 
+#include <gtest/gtest.h>
+
+#include "dem/errors.hpp"
 #include "piv/displacement_fields.hpp"
 #include "piv/piv_result.hpp"
 
 namespace trapdem::test {
+
+// Runs `f`, expects an InputError whose message contains `fragment`.
+template <class F>
+void expect_input_error(F f, const std::string& fragment) {
+  try {
+    f();
+    ADD_FAILURE() << "no InputError; expected one mentioning '" << fragment << "'";
+  } catch (const InputError& e) {
+    EXPECT_NE(std::string(e.what()).find(fragment), std::string::npos) << "message: " << e.what();
+  }
+}
 
 struct ErrorStatistics {
   double mean = 0.0;  // systematic error, px
