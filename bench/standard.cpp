@@ -103,6 +103,7 @@ int run(const Options& o) {
 
   sim.run(o.warmup);
   const std::int64_t rebuilds0 = sim.stats().rebuilds;
+  const double rebuild_seconds0 = sim.stats().rebuild_seconds;
   const double ke0 = sim.kinetic_energy();
   double max_overlap = 0.0;
 
@@ -117,10 +118,11 @@ int run(const Options& o) {
   const double rate = double(n) * double(o.steps) / seconds / 1e6;
   const double contacts_per_particle = 2.0 * double(sim.contact_count()) / double(n);
   std::printf("trapdem N=%zu threads=%d Mpsteps/s=%.3f\n", n, o.threads, rate);
-  std::printf("# loop_s=%.3f steps=%ld warmup=%ld contacts/particle=%.4f rebuilds=%lld max_overlap=%.3f%% "
-              "ke_start=%.4g J ke_end=%.4g J\n",
+  std::printf("# loop_s=%.3f steps=%ld warmup=%ld contacts/particle=%.4f rebuilds=%lld rebuild_s=%.3f "
+              "max_overlap=%.3f%% ke_start=%.4g J ke_end=%.4g J\n",
               seconds, o.steps, o.warmup, contacts_per_particle,
-              static_cast<long long>(sim.stats().rebuilds - rebuilds0), 100.0 * max_overlap, ke0, sim.kinetic_energy());
+              static_cast<long long>(sim.stats().rebuilds - rebuilds0), sim.stats().rebuild_seconds - rebuild_seconds0,
+              100.0 * max_overlap, ke0, sim.kinetic_energy());
   if (!std::isfinite(rate) || contacts_per_particle < 1.0)
     throw SimulationError("implausible run: contacts per particle " + std::to_string(contacts_per_particle) +
                           " (a settled bed has ~3.6); is the data file a settled packing?");

@@ -22,19 +22,25 @@ ContactHistory flipped(ContactHistory h) {
 }
 }  // namespace
 
-void HistoryArchive::store_pairs(const PairList& list, const std::vector<std::int64_t>& id) {
+namespace {
+bool id_order(const HistoryArchive::PairRecord& x, const HistoryArchive::PairRecord& y) {
+  return x.low != y.low ? x.low < y.low : x.high < y.high;
+}
+}  // namespace
+
+void HistoryArchive::store_pairs(const PairList& list, const ContactSlots& slot, const ContactHistory* contacts,
+                                 const std::vector<std::int64_t>& id) {
   pairs.clear();
   const std::size_t n = list.first.empty() ? 0 : list.first.size() - 1;
   for (std::size_t i = 0; i < n; ++i) {
     for (std::uint32_t k = list.first[i]; k < list.first[i + 1]; ++k) {
-      const ContactHistory& h = list.history[k];
-      if (!h.touching()) continue;
+      if (slot[k] == kNoContact) continue;
+      const ContactHistory& h = contacts[slot[k]];
       const std::int64_t a = id[i], b = id[list.partner[k]];
       pairs.push_back(a < b ? PairRecord{a, b, h} : PairRecord{b, a, flipped(h)});
     }
   }
-  std::sort(pairs.begin(), pairs.end(),
-            [](const PairRecord& x, const PairRecord& y) { return x.low != y.low ? x.low < y.low : x.high < y.high; });
+  std::sort(pairs.begin(), pairs.end(), id_order);
 }
 
 void HistoryArchive::store_walls(const WallList& list, const std::vector<std::int64_t>& id) {
@@ -48,22 +54,33 @@ void HistoryArchive::store_walls(const WallList& list, const std::vector<std::in
   });
 }
 
-void HistoryArchive::restore_pairs(PairList& list, const std::vector<std::int64_t>& id) const {
+std::size_t HistoryArchive::restore_pairs(const PairList& list, const std::vector<std::int64_t>& id,
+                                          ContactSlots& slot, ContactHistory* contacts) const {
   const std::size_t n = list.first.size() - 1;
-  list.history.assign(list.size(), ContactHistory{});
-  if (pairs.empty()) return;
+  slot.assign(list.size(), kNoContact);
+  if (pairs.empty()) return 0;
+  // The look-ups in parallel, each pair's record index in its slot; then the histories packed in
+  // pair order.
 #pragma omp parallel for schedule(static)
   for (std::size_t i = 0; i < n; ++i) {
     for (std::uint32_t k = list.first[i]; k < list.first[i + 1]; ++k) {
       const std::int64_t a = id[i], b = id[list.partner[k]];
       const PairRecord key{std::min(a, b), std::max(a, b), {}};
-      auto it = std::lower_bound(pairs.begin(), pairs.end(), key, [](const PairRecord& x, const PairRecord& y) {
-        return x.low != y.low ? x.low < y.low : x.high < y.high;
-      });
+      auto it = std::lower_bound(pairs.begin(), pairs.end(), key, id_order);
       if (it != pairs.end() && it->low == key.low && it->high == key.high)
-        list.history[k] = a < b ? it->history : flipped(it->history);
+        slot[k] = static_cast<std::uint32_t>(it - pairs.begin());
     }
   }
+  std::uint32_t found = 0;
+  for (std::size_t i = 0; i < n; ++i) {
+    for (std::uint32_t k = list.first[i]; k < list.first[i + 1]; ++k) {
+      if (slot[k] == kNoContact) continue;
+      const PairRecord& record = pairs[slot[k]];
+      contacts[found] = id[i] < id[list.partner[k]] ? record.history : flipped(record.history);
+      slot[k] = found++;
+    }
+  }
+  return found;
 }
 
 void HistoryArchive::restore_walls(WallList& list, const std::vector<std::int64_t>& id) const {
@@ -139,7 +156,7 @@ void build_pairs(const Particles& p, const CellSort& cells, const Domain& domain
                      [&](std::uint32_t j) { out.partner[k++] = j; });
     std::sort(out.partner.begin() + out.first[i], out.partner.begin() + out.first[i + 1]);
   }
-  out.history.assign(out.partner.size(), ContactHistory{});
+  out.history.clear();
 }
 
 void build_wall_candidates(const Particles& p, const std::vector<Wall>& walls, double skin, WallList& out) {

@@ -18,6 +18,8 @@ namespace trapdem {
 struct PairList {
   std::vector<std::uint32_t> first;
   std::vector<std::uint32_t> partner;
+  // Per listed pair, for tools and checkpoints (Simulation::pairs()). build_pairs() leaves it
+  // empty: the engine keeps only the touching pairs' histories (see ContactSlots).
   std::vector<ContactHistory> history;
 
   std::size_t size() const { return partner.size(); }
@@ -37,12 +39,22 @@ struct WallList {
   std::size_t size() const { return wall.size(); }
 };
 
+// The engine's form of the pairs' contact histories: a listed pair's slot is its index into an
+// array of the touching pairs' histories, or kNoContact (most listed pairs do not touch).
+inline constexpr std::uint32_t kNoContact = ~0u;
+using ContactSlots = std::vector<std::uint32_t>;  // per listed pair
+
 // Contact history keyed by particle ids, to survive a rebuild in which indices change.
 class HistoryArchive {
  public:
-  void store_pairs(const PairList& pairs, const std::vector<std::int64_t>& id);
+  // From the compact form: pair k's history is contacts[slot[k]] where slot[k] != kNoContact.
+  void store_pairs(const PairList& pairs, const ContactSlots& slot, const ContactHistory* contacts,
+                   const std::vector<std::int64_t>& id);
   void store_walls(const WallList& walls, const std::vector<std::int64_t>& id);
-  void restore_pairs(PairList& pairs, const std::vector<std::int64_t>& id) const;
+  // Into the compact form: slot[k] for every listed pair; the histories found packed at the front of
+  // `contacts` (room for pairs.size() entries) in pair order. Returns how many were found.
+  std::size_t restore_pairs(const PairList& pairs, const std::vector<std::int64_t>& id, ContactSlots& slot,
+                            ContactHistory* contacts) const;
   void restore_walls(WallList& walls, const std::vector<std::int64_t>& id) const;
 
   struct PairRecord {

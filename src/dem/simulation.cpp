@@ -82,8 +82,7 @@ void Simulation::add_particle(std::int64_t id, const Vec3& x, double radius, dou
 void Simulation::remove_particles(const std::vector<std::uint32_t>& indices) {
   if (indices.empty()) return;
   if (!history_pending_ && !pairs_.first.empty()) {
-    pairs_.history = pair_history();
-    pending_history_.store_pairs(pairs_, p_.id);
+    pending_history_.store_pairs(pairs_, pair_contact_, contacts_.data(), p_.id);
     pending_history_.store_walls(wall_list_, p_.id);
     history_pending_ = true;
   }
@@ -125,22 +124,35 @@ void Simulation::step() {
   check_stability();
 }
 
-// Derived from the lists: the activity byte per pair (it mirrors the history's touching flag, so
-// that the many listed pairs that do not touch cost no read of their history) and the particles
-// that have walls within reach.
-void Simulation::derive_list_caches() {
+void Simulation::find_particles_near_walls() {
   particles_near_walls_.clear();
   for (std::uint32_t i = 0; i + 1 < wall_list_.first.size(); ++i)
     if (wall_list_.first[i + 1] > wall_list_.first[i]) particles_near_walls_.push_back(i);
-  // The history moves from the list (per listed pair) into the compact form the step uses.
-  const std::size_t pair_count = pairs_.size();
-  pair_contact_.assign(pair_count, kNoContact);
-  contacts_.assign(pair_count + 1, ContactHistory{});
-  contacts_next_.assign(pair_count + 1, ContactHistory{});
-  for (std::size_t k = 0; k < pair_count; ++k) {
-    if (pairs_.history[k].flags == 0) continue;
-    pair_contact_[k] = static_cast<std::uint32_t>(k);
-    contacts_[k] = pairs_.history[k];
+}
+
+// Room for a history per listed pair in both arrays (a thread's block writes from index
+// first[begin] on, and every listed pair may touch). Grown only: the pages of a larger earlier
+// list stay, and nothing is written but the empty entry at index pairs_.size(), where a contact
+// that has just formed reads its history from.
+void Simulation::size_contact_arrays() {
+  const std::size_t needed = pairs_.size() + 1;
+  if (contacts_.size() < needed) {
+    contacts_.resize(needed);
+    contacts_next_.resize(needed);
+  }
+  contacts_[pairs_.size()] = ContactHistory{};
+  contacts_next_[pairs_.size()] = ContactHistory{};
+}
+
+// The per-listed-pair history of a checkpoint into the compact form.
+void Simulation::compact_pair_history() {
+  size_contact_arrays();
+  pair_contact_.assign(pairs_.size(), kNoContact);
+  std::uint32_t found = 0;
+  for (std::size_t k = 0; k < pairs_.history.size(); ++k) {
+    if (!pairs_.history[k].touching()) continue;
+    contacts_[found] = pairs_.history[k];
+    pair_contact_[k] = found++;
   }
   pairs_.history.clear();
   pairs_.history.shrink_to_fit();
@@ -225,6 +237,7 @@ void Simulation::update_neighbours_if_needed() {
 }
 
 void Simulation::rebuild_lists() {
+  const double started = omp_get_wtime();
   ++stats_.rebuilds;
   // Wrap periodic axes into the domain, counting the images crossed.
   const Domain& dom = settings_.domain;
@@ -248,8 +261,7 @@ void Simulation::rebuild_lists() {
     archive = std::move(pending_history_);
     history_pending_ = false;
   } else {
-    pairs_.history = pair_history();
-    archive.store_pairs(pairs_, p_.id);
+    archive.store_pairs(pairs_, pair_contact_, contacts_.data(), p_.id);
     archive.store_walls(wall_list_, p_.id);
   }
 
@@ -269,15 +281,17 @@ void Simulation::rebuild_lists() {
     cells = sort_into_cells(p_.position, dom, cell);
   }
   build_pairs(p_, cells, dom, skin_, pairs_);
-  archive.restore_pairs(pairs_, p_.id);
+  size_contact_arrays();
+  archive.restore_pairs(pairs_, p_.id, pair_contact_, contacts_.data());
   build_wall_candidates(p_, walls_, skin_, wall_list_);
   archive.restore_walls(wall_list_, p_.id);
 
-  derive_list_caches();
+  find_particles_near_walls();
   position_at_build_ = p_.position;
   wall_displacement_at_build_.resize(walls_.size());
   for (std::size_t k = 0; k < walls_.size(); ++k) wall_displacement_at_build_[k] = walls_[k].displacement;
   lists_valid_ = true;
+  stats_.rebuild_seconds += omp_get_wtime() - started;
 }
 
 namespace {
@@ -400,7 +414,6 @@ std::uint32_t collect_touching(PairCursor& at, std::size_t end, const Vec3* __re
                                std::uint32_t* __restrict pair_contact, std::uint32_t no_history,
                                std::uint32_t& next_contact, const Domain& dom, ContactBatch& __restrict batch,
                                const SweepPrefetch& ahead_of, std::size_t n) {
-  constexpr std::uint32_t kNoContact = ~0u;
   std::uint32_t next = next_contact;
   std::uint32_t count = 0;
   for (std::size_t i = at.owner; i < end; ++i) {
@@ -688,6 +701,8 @@ std::string Simulation::describe_particle(std::uint32_t i) const {
 }
 
 void Simulation::check_stability() const {
+  if (bad_particle_ < 0 && escaped_particle_ < 0 && !(max_overlap_seen_ > settings_.max_overlap_fraction)) return;
+  // Only a failing run gets here: the message costs a scan of the masses and a string.
   const std::string when = fmt::format("step {} (t = {:.6g} s, dt = {:.4g} s, critical step {:.4g} s)", stats_.steps,
                                        time_, dt_, critical_time_step());
   if (bad_particle_ >= 0)
@@ -763,7 +778,8 @@ void Simulation::restore(double time, const SimulationStats& stats, ListState li
   position_at_build_ = std::move(lists.position_at_build);
   wall_displacement_at_build_ = std::move(lists.wall_displacement_at_build);
   rebuilds_since_reorder_ = lists.rebuilds_since_reorder;
-  derive_list_caches();
+  compact_pair_history();
+  find_particles_near_walls();
   history_pending_ = false;
   lists_valid_ = true;
   setup_done_ = true;

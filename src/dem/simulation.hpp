@@ -28,6 +28,7 @@ struct SimulationSettings {
 struct SimulationStats {
   std::int64_t rebuilds = 0;
   std::int64_t steps = 0;
+  double rebuild_seconds = 0.0;  // s of wall-clock time in rebuilds, in this process (not checkpointed)
 };
 
 // The touching pairs of a stretch of a thread's block, gathered so that the contact law runs over
@@ -114,7 +115,9 @@ class Simulation {
   void integrate_velocities();
   void check_stability() const;
   void invalidate_lists() { lists_valid_ = false; }
-  void derive_list_caches();
+  void find_particles_near_walls();
+  void size_contact_arrays();
+  void compact_pair_history();
   std::string describe_particle(std::uint32_t i) const;
 
   Particles p_;
@@ -143,13 +146,12 @@ class Simulation {
   std::vector<ContactBatch> batches_;                 // one per thread
   std::vector<std::uint32_t> particles_near_walls_;  // ascending
   std::vector<Vec3> wall_loads_;                     // per thread and wall: force, torque
-  // The touching pairs' contact histories, compact (the lists' per-pair history array is mostly
-  // pairs that do not touch): pair_contact_[k] is pair k's index into contacts_, or kNoContact.
-  // Each step writes them anew, in pair order, into contacts_next_ and swaps: a thread's block
-  // writes from index first[begin] of the pair list on. The last entry of both stays empty: it is
-  // where a contact that has just formed reads its history from.
-  static constexpr std::uint32_t kNoContact = ~0u;
-  std::vector<std::uint32_t> pair_contact_;
+  // The touching pairs' contact histories, compact (most listed pairs do not touch):
+  // pair_contact_[k] is pair k's index into contacts_, or kNoContact. Each step writes them anew,
+  // in pair order, into contacts_next_ and swaps: a thread's block writes from index first[begin]
+  // of the pair list on. The entry at index pairs_.size() of both stays empty: it is where a
+  // contact that has just formed reads its history from.
+  ContactSlots pair_contact_;
   std::vector<ContactHistory> contacts_, contacts_next_;
   std::vector<ContactHistory> pair_history() const;  // per listed pair, from the compact form
   std::vector<Vec3> position_at_build_;
