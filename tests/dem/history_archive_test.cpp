@@ -1,0 +1,118 @@
+// The contact-history archive that carries the touching pairs' springs across a rebuild: stored
+// from the compact form by particle id, restored into the compact form of a new list after the
+// particles were shuffled (as a re-ordering does) and some removed. Every history must land on its
+// own pair, turned to the new owner's side (a pair whose owner changed has its vectors negated),
+// and packed in pair order. Exact: the values are copied, not computed.
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <map>
+#include <numeric>
+#include <string>
+
+#include "dem/neighbor_list.hpp"
+#include "test_support.hpp"
+
+using namespace trapdem;
+using namespace trapdem::testing_support;
+
+namespace {
+
+// A history that names its pair (the two ids in its vectors), expressed for body `from`: the
+// vectors of the lower id's side, negated for the other side.
+ContactHistory history_of(std::int64_t from, std::int64_t to) {
+  const double sign = from < to ? 1.0 : -1.0;
+  const double low = double(std::min(from, to)), high = double(std::max(from, to));
+  ContactHistory h;
+  h.tangential_spring = sign * Vec3{low, high, 1.0};
+  h.rolling_spring = sign * Vec3{-high, 0.5, low};
+  h.flags = ContactHistory::kTouching | ((std::int64_t(low) + std::int64_t(high)) % 3 == 0 ? ContactHistory::kSliding : 0u);
+  return h;
+}
+
+PairList list_of(const Particles& p, const Domain& domain, double skin) {
+  const double r_max = *std::max_element(p.radius.begin(), p.radius.end());
+  PairList list;
+  build_pairs(p, sort_into_cells(p.position, domain, 2.0 * r_max + skin), domain, skin, list);
+  return list;
+}
+
+void round_trip(const std::vector<std::int64_t>& ids, const std::string& what) {
+  SCOPED_TRACE(what);
+  const Domain domain = box(0.008);
+  Rng rng(11);
+  Particles p;
+  for (std::int64_t id : ids)
+    p.add(id, {rng.uniform(0.0, 0.008), rng.uniform(0.0, 0.008), rng.uniform(0.0, 0.008)},
+          rng.uniform(0.0004, 0.0008), 2500.0);
+  const double skin = 0.0002;
+  const PairList before = list_of(p, domain, skin);
+  // About half the listed pairs touch; their histories, compact in pair order.
+  ContactSlots slot(before.size(), kNoContact);
+  std::vector<ContactHistory> contacts;
+  std::map<std::pair<std::int64_t, std::int64_t>, bool> stored;
+  for (std::uint32_t i = 0; i + 1 < before.first.size(); ++i) {
+    for (std::uint32_t k = before.first[i]; k < before.first[i + 1]; ++k) {
+      if (rng.uniform() < 0.5) continue;
+      const std::int64_t a = p.id[i], b = p.id[before.partner[k]];
+      slot[k] = std::uint32_t(contacts.size());
+      contacts.push_back(history_of(a, b));
+      stored[{std::min(a, b), std::max(a, b)}] = true;
+    }
+  }
+  ASSERT_GT(contacts.size(), 200u);
+  HistoryArchive archive;
+  archive.store_pairs(before, slot, contacts.data(), p.id);
+
+  // Shuffle the particles and drop a tenth of them.
+  std::vector<std::uint32_t> keep(p.size());
+  std::iota(keep.begin(), keep.end(), 0u);
+  for (std::size_t k = keep.size() - 1; k > 0; --k) std::swap(keep[k], keep[rng.next() % (k + 1)]);
+  keep.resize(keep.size() * 9 / 10);
+  p.permute(keep);
+  const PairList after = list_of(p, domain, skin);
+
+  ContactSlots restored_slot;
+  std::vector<ContactHistory> restored(after.size() + 1);
+  const std::size_t found = archive.restore_pairs(after, p.id, restored_slot, restored.data());
+  ASSERT_EQ(restored_slot.size(), after.size());
+  std::size_t expected_found = 0;
+  std::uint32_t next = 0;
+  for (std::uint32_t i = 0; i + 1 < after.first.size(); ++i) {
+    for (std::uint32_t k = after.first[i]; k < after.first[i + 1]; ++k) {
+      const std::int64_t a = p.id[i], b = p.id[after.partner[k]];
+      const bool was_stored = stored.count({std::min(a, b), std::max(a, b)}) > 0;
+      if (!was_stored) {
+        EXPECT_EQ(restored_slot[k], kNoContact) << "pair " << a << "-" << b << " had no history";
+        continue;
+      }
+      ++expected_found;
+      ASSERT_EQ(restored_slot[k], next) << "pair " << a << "-" << b << ": not packed in pair order";
+      ++next;
+      const ContactHistory want = history_of(a, b);
+      const ContactHistory& got = restored[restored_slot[k]];
+      EXPECT_EQ(got.tangential_spring.x, want.tangential_spring.x) << "pair " << a << "-" << b;
+      EXPECT_EQ(got.tangential_spring.y, want.tangential_spring.y) << "pair " << a << "-" << b;
+      EXPECT_EQ(got.tangential_spring.z, want.tangential_spring.z) << "pair " << a << "-" << b;
+      EXPECT_EQ(got.rolling_spring.x, want.rolling_spring.x) << "pair " << a << "-" << b;
+      EXPECT_EQ(got.rolling_spring.z, want.rolling_spring.z) << "pair " << a << "-" << b;
+      EXPECT_EQ(got.flags, want.flags) << "pair " << a << "-" << b;
+    }
+  }
+  EXPECT_EQ(found, expected_found);
+  EXPECT_GT(expected_found, 150u) << "too few pairs survived to test anything";
+  report("{}: {} histories stored, {} restored after shuffling and removing a tenth", what, contacts.size(), found);
+}
+
+}  // namespace
+
+TEST(HistoryArchive, RestoresEveryHistoryOnItsPairAfterShuffleAndRemoval) {
+  std::vector<std::int64_t> dense(700);
+  std::iota(dense.begin(), dense.end(), 1);
+  round_trip(dense, "ids 1..700");
+  std::vector<std::int64_t> reversed(dense.rbegin(), dense.rend());
+  round_trip(reversed, "ids 700..1 (owners change sides)");
+  std::vector<std::int64_t> sparse;
+  for (std::int64_t k = 0; k < 700; ++k) sparse.push_back(1000003 * ((k * 389) % 700) - 5000000);
+  round_trip(sparse, "sparse ids, negative ones too (looked up by search, not table)");
+}
