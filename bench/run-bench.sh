@@ -15,18 +15,25 @@ EXE="$BUILD/bench/standard"
 make_packings
 OUT="$DATA/trapdem_runs.txt"
 : > "$OUT"
-for W in $SIZES; do
-  NS=$(steps_for $W)
-  for T in $THREADS; do
-    runs=()
-    for rep in $(seq 1 $REPS); do
+# The repetitions are the outer loop: each round runs every case once, so that a slow spell of a
+# shared host falls on all cases alike instead of on one case's block of repetitions (the loss per
+# particle and the thread speed-up are ratios of cases).
+declare -A runs
+for rep in $(seq 1 $REPS); do
+  for W in $SIZES; do
+    NS=$(steps_for $W)
+    for T in $THREADS; do
       if ! res=$("$EXE" --data "$DATA/pack_W$W.data" --width $W --steps $NS --threads $T --warmup $WARMUP); then
         echo "bench: trapdem failed (W=$W threads=$T rep=$rep)" >&2; exit 1
       fi
       echo "$res" | sed "s/^/W=$W rep=$rep: /" >> "$OUT"
-      runs+=("$(echo "$res" | tr '\n' '\t')")
+      runs[$W,$T]+="$(echo "$res" | tr '\n' '\t')"$'\n'
     done
-    # Median by Mpsteps/s; print its two lines.
-    printf '%s\n' "${runs[@]}" | sort -t= -k4 -g | sed -n "$(( (REPS + 1) / 2 ))p" | tr '\t' '\n' | sed '/^$/d'
+  done
+done
+# Per case, the median by Mpsteps/s; print its two lines.
+for W in $SIZES; do
+  for T in $THREADS; do
+    printf '%s' "${runs[$W,$T]}" | sort -t= -k4 -g | sed -n "$(( (REPS + 1) / 2 ))p" | tr '\t' '\n' | sed '/^$/d'
   done
 done
