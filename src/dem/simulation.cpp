@@ -60,7 +60,7 @@ Vec3 Simulation::gravity() const { return gravity_is_constant_ ? constant_gravit
 
 std::size_t Simulation::add_wall(Wall wall) {
   wall.law.validate("wall '" + wall.name + "'");
-  wall_constants_.push_back(make_constants(wall.law));
+  wall_laws_.add(make_constants(wall.law));
   walls_.push_back(std::move(wall));
   invalidate_lists();
   return walls_.size() - 1;
@@ -300,11 +300,19 @@ namespace {
 // AVX-512). The law's choices (rolling model, lever arm, rolling stiffness and dashpot) are
 // template arguments, resolved at compile time: GCC neither if-converts a loop-invariant
 // three-way branch nor vectorises a select on a loop-invariant flag.
+struct PairBatchLaw {
+  using Fn = void (*)(ContactBatch&, std::uint32_t, ContactConstants, const double*, const double*, const double*,
+                      const Vec3*, const Vec3*, const ContactHistory*, double);
+  template <int kRolling, bool kEffectiveLever, bool kRollingStiffnessFromKt, bool kRollingDashpot>
+  static void run(ContactBatch& batch, std::uint32_t count, ContactConstants c, const double* __restrict r,
+                  const double* __restrict m, const double* __restrict inv_i, const Vec3* __restrict v,
+                  const Vec3* __restrict w, const ContactHistory* __restrict history, double dt);
+};
+
 template <int kRolling, bool kEffectiveLever, bool kRollingStiffnessFromKt, bool kRollingDashpot>
-void contact_law_over_batch(ContactBatch& batch, std::uint32_t count, ContactConstants c,
-                            const double* __restrict r, const double* __restrict m,
-                            const double* __restrict inv_i, const Vec3* __restrict v, const Vec3* __restrict w,
-                            const ContactHistory* __restrict history, double dt) {
+void PairBatchLaw::run(ContactBatch& batch, std::uint32_t count, ContactConstants c, const double* __restrict r,
+                       const double* __restrict m, const double* __restrict inv_i, const Vec3* __restrict v,
+                       const Vec3* __restrict w, const ContactHistory* __restrict history, double dt) {
   c.rolling = kRolling;
   c.effective_lever_arm = kEffectiveLever;
   c.rolling_stiffness_from_kt = kRollingStiffnessFromKt;
@@ -355,27 +363,6 @@ void contact_law_over_batch(ContactBatch& batch, std::uint32_t count, ContactCon
     batch.rolling_spring[2][q] = h.rolling_spring.z;
     batch.flags[q] = h.flags;
   }
-}
-
-using BatchLaw = void (*)(ContactBatch&, std::uint32_t, ContactConstants, const double*, const double*,
-                          const double*, const Vec3*, const Vec3*, const ContactHistory*, double);
-
-// The instance of contact_law_over_batch for the law's choices (the lever arm, stiffness and
-// dashpot choices matter for the rolling models only).
-BatchLaw batch_law_for(const ContactConstants& c) {
-  if (c.rolling == 0) return contact_law_over_batch<0, false, false, false>;
-  if (c.rolling == 1)
-    return c.effective_lever_arm ? contact_law_over_batch<1, true, false, false>
-                                 : contact_law_over_batch<1, false, false, false>;
-  const bool damped = c.needs_rolling_inertia;
-  if (c.effective_lever_arm) {
-    if (c.rolling_stiffness_from_kt)
-      return damped ? contact_law_over_batch<2, true, true, true> : contact_law_over_batch<2, true, true, false>;
-    return damped ? contact_law_over_batch<2, true, false, true> : contact_law_over_batch<2, true, false, false>;
-  }
-  if (c.rolling_stiffness_from_kt)
-    return damped ? contact_law_over_batch<2, false, true, true> : contact_law_over_batch<2, false, true, false>;
-  return damped ? contact_law_over_batch<2, false, false, true> : contact_law_over_batch<2, false, false, false>;
 }
 
 // Where collect_touching() stopped: the owner and its next listed pair.
@@ -534,7 +521,10 @@ void Simulation::contacts() {
   const int threads = omp_get_max_threads();
   deferred_.resize(std::size_t(threads));
   batches_.resize(std::size_t(threads));
-  const BatchLaw batch_law = batch_law_for(c);
+  wall_batches_.resize(std::size_t(threads));
+  const WallBatchLaw::Fn wall_law =
+      walls_.empty() || !wall_laws_.uniform_choices ? nullptr : law_instance<WallBatchLaw>(wall_laws_.all.front());
+  const PairBatchLaw::Fn batch_law = law_instance<PairBatchLaw>(c);
   const std::size_t n_walls = walls_.size();
   wall_loads_.assign(std::size_t(threads) * n_walls * 2, Vec3{});  // force, torque per thread and wall
   const std::uint32_t* near_walls = particles_near_walls_.data();
@@ -550,9 +540,15 @@ void Simulation::contacts() {
     Vec3* my_wall_loads = wall_loads_.data() + std::size_t(me) * n_walls * 2;
     // The block's particles with walls within reach, in index order.
     const std::uint32_t* next_near_wall = std::lower_bound(near_walls, near_walls_end, std::uint32_t(begin));
+    WallBatch& wall_batch = wall_batches_[std::size_t(me)];
+    wall_batch.count = 0;
     auto walls_before = [&](std::size_t done) {  // the wall contacts of the particles before `done`
-      for (; next_near_wall != near_walls_end && *next_near_wall < done; ++next_near_wall)
-        wall_contacts_of(*next_near_wall, my_wall_loads, max_overlap);
+      for (; next_near_wall != near_walls_end && *next_near_wall < done; ++next_near_wall) {
+        const std::uint32_t i = *next_near_wall;
+        if (wall_batch.count + (wall_list_.first[i + 1] - wall_list_.first[i]) > WallBatch::kCapacity)
+          wall_forces(wall_batch, wall_law, my_wall_loads, max_overlap);
+        collect_wall_contacts(i, wall_batch);
+      }
     };
     later.clear();
     for (std::size_t i = begin; i < end; ++i) {
@@ -582,6 +578,7 @@ void Simulation::contacts() {
       t[sums.owner] += sums.torque;
     }
     walls_before(end);
+    wall_forces(wall_batch, wall_law, my_wall_loads, max_overlap);
   }
   for (const auto& shares : deferred_) {
     for (const PartnerShare& s : shares) {
@@ -601,22 +598,16 @@ void Simulation::contacts() {
   }
 }
 
-// The wall contacts of particle i (which has walls within reach), added to its force and torque
-// and to the thread's wall loads `load` (force, torque per wall).
-void Simulation::wall_contacts_of(std::uint32_t i, Vec3* load, double& max_overlap) {
-  const Vec3* x = p_.position.data();
-  const Vec3* v = p_.velocity.data();
-  const Vec3* w = p_.angular_velocity.data();
-  const double* r = p_.radius.data();
-  const double* m = p_.mass.data();
-  const double* inv_i = p_.inv_inertia.data();
+// The wall contacts of particle i (which has walls within reach): the touching candidates go to
+// the batch, the others lose their history and force.
+void Simulation::collect_wall_contacts(std::uint32_t i, WallBatch& batch) {
+  const Vec3 xi = p_.position[i];
+  const double ri = p_.radius[i];
   const std::uint32_t* wall_of = wall_list_.wall.data();
   ContactHistory* whist = wall_list_.history.data();
   Vec3* wforce = wall_list_.force.data();
   const Wall* walls = walls_.data();
-  const ContactConstants* wc = wall_constants_.data();
 
-  Vec3 fi{}, ti{};
   const std::uint32_t k0 = wall_list_.first[i], count = wall_list_.first[i + 1] - k0;
   {  // The candidate arrays are read in order but sparsely (particles near walls only): prefetched.
     const std::size_t ahead = std::min<std::size_t>(k0 + 16, wall_list_.wall.size() - 1);
@@ -628,42 +619,70 @@ void Simulation::wall_contacts_of(std::uint32_t i, Vec3* load, double& max_overl
   bool touching[kMaxWallCandidates];
   std::uint32_t touching_count = 0;
   for (std::uint32_t c = 0; c < count; ++c) {
-    near[c] = wall_proximity(walls[wall_of[k0 + c]], x[i]);
-    touching[c] = near[c].distance < r[i];
+    near[c] = wall_proximity(walls[wall_of[k0 + c]], xi);
+    touching[c] = near[c].distance < ri;
     touching_count += touching[c] ? 1 : 0;
   }
   const bool several = touching_count > 1;
   for (std::uint32_t c = 0; c < count; ++c) {
     const std::uint32_t k = k0 + c;
-    const Wall& wall = walls[wall_of[k]];
-    const double overlap = r[i] - near[c].distance;
     if (!touching[c] ||
         (several && edge_contact_hidden(c, near, touching, count,
                                         [&](std::size_t b) -> const Wall& { return walls[wall_of[k0 + b]]; },
-                                        1e-6 * r[i]))) {
+                                        1e-6 * ri))) {
       if (whist[k].flags != 0) whist[k].reset();
       wforce[k] = Vec3{};
       continue;
     }
-    max_overlap = std::max(max_overlap, overlap / r[i]);
-    ContactBodies b;
-    b.effective_mass = m[i];
-    b.arm_i = near[c].distance;
-    b.arm_j = 0.0;
-    b.lever = r[i];
-    const double inertia = 1.0 / inv_i[i];
-    b.rolling_inertia = inertia + m[i] * r[i] * r[i];
-    b.spin_inertia = inertia;
-    const ContactForce cf = contact_force(wc[wall_of[k]], b, near[c].normal, overlap, v[i] - wall.current_velocity,
-                                          w[i], Vec3{}, whist[k], dt_);
-    fi += cf.force;
-    ti += cf.rolling_torque - b.arm_i * cross(near[c].normal, cf.tangential);
-    wforce[k] = cf.force;
-    load[2 * wall_of[k]] -= cf.force;
-    load[2 * wall_of[k] + 1] -= cross(near[c].point - wall.origin, cf.force);
+    const Wall& wall = walls[wall_of[k]];
+    const std::uint32_t q = batch.count++;
+    batch.particle[q] = i;
+    batch.candidate[q] = k;
+    batch.wall[q] = wall_of[k];
+    const Vec3 lever = near[c].point - wall.origin;
+    for (int a = 0; a < 3; ++a) {
+      batch.normal[a][q] = near[c].normal[a];
+      batch.point[a][q] = lever[a];
+      batch.wall_velocity[a][q] = wall.current_velocity[a];
+    }
+    batch.distance[q] = near[c].distance;
   }
-  p_.force[i] += fi;
-  p_.torque[i] += ti;
+}
+
+// The law over the batch of wall contacts (vectorised when the walls' laws make the same choices),
+// then in contact order: the histories and forces stored, the thread's wall loads `load` (force,
+// torque per wall) and each particle's force and torque added (its contacts summed first).
+void Simulation::wall_forces(WallBatch& batch, WallBatchLaw::Fn law, Vec3* load, double& max_overlap) {
+  if (batch.count == 0) return;
+  const BodyArrays body{p_.radius.data(), p_.mass.data(), p_.inv_inertia.data(), p_.velocity.data(),
+                        p_.angular_velocity.data()};
+  ContactHistory* whist = wall_list_.history.data();
+  if (law)
+    law(batch, wall_laws_, body, whist, dt_);
+  else
+    wall_law_over_batch_any(batch, wall_laws_, body, whist, dt_);
+  Vec3* wforce = wall_list_.force.data();
+  Vec3 fi{}, ti{};
+  for (std::uint32_t q = 0; q < batch.count; ++q) {
+    const std::uint32_t i = batch.particle[q], k = batch.candidate[q], wall = batch.wall[q];
+    max_overlap = std::max(max_overlap, (p_.radius[i] - batch.distance[q]) / p_.radius[i]);
+    whist[k].tangential_spring = {batch.spring[0][q], batch.spring[1][q], batch.spring[2][q]};
+    whist[k].rolling_spring = {batch.rolling_spring[0][q], batch.rolling_spring[1][q], batch.rolling_spring[2][q]};
+    whist[k].flags = batch.flags[q];
+    const Vec3 force{batch.force[0][q], batch.force[1][q], batch.force[2][q]};
+    wforce[k] = force;
+    load[2 * wall] -= force;
+    load[2 * wall + 1] -= cross(Vec3{batch.point[0][q], batch.point[1][q], batch.point[2][q]}, force);
+    fi += force;
+    ti += Vec3{batch.torque[0][q], batch.torque[1][q], batch.torque[2][q]};
+    if (q + 1 == batch.count || batch.particle[q + 1] != i) {
+      p_.force[i] += fi;
+      p_.torque[i] += ti;
+      fi = Vec3{};
+      ti = Vec3{};
+    }
+  }
+  batch.count = 0;
 }
 
 void Simulation::integrate_velocities() {

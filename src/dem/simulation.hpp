@@ -11,6 +11,7 @@
 #include "dem/neighbor_list.hpp"
 #include "dem/particles.hpp"
 #include "dem/wall.hpp"
+#include "dem/wall_batch.hpp"
 
 namespace trapdem {
 
@@ -111,7 +112,8 @@ class Simulation {
   void update_neighbours_if_needed();
   void rebuild_lists();
   void contacts();  // particle pairs and walls
-  void wall_contacts_of(std::uint32_t i, Vec3* load, double& max_overlap);
+  void collect_wall_contacts(std::uint32_t i, WallBatch& batch);
+  void wall_forces(WallBatch& batch, WallBatchLaw::Fn law, Vec3* load, double& max_overlap);
   void integrate_velocities();
   void check_stability() const;
   void invalidate_lists() { lists_valid_ = false; }
@@ -125,7 +127,7 @@ class Simulation {
   ContactConstants constants_;
   SimulationSettings settings_;
   std::vector<Wall> walls_;
-  std::vector<ContactConstants> wall_constants_;
+  WallLaws wall_laws_;  // per wall, its law's constants
   std::function<Vec3(double)> gravity_;
   Vec3 constant_gravity_;
   bool gravity_is_constant_ = true;
@@ -144,6 +146,7 @@ class Simulation {
  private:
   std::vector<std::vector<PartnerShare>> deferred_;  // per thread: shares for later threads' particles
   std::vector<ContactBatch> batches_;                 // one per thread
+  std::vector<WallBatch> wall_batches_;               // one per thread
   std::vector<std::uint32_t> particles_near_walls_;  // ascending
   std::vector<Vec3> wall_loads_;                     // per thread and wall: force, torque
   // The touching pairs' contact histories, compact (most listed pairs do not touch):

@@ -3,6 +3,7 @@
 #include <gtest/gtest.h>
 #include <omp.h>
 
+#include <deque>
 #include <filesystem>
 #include <fstream>
 #include <sstream>
@@ -26,20 +27,44 @@ ExperimentConfig tiny_config(const std::vector<std::string>& overrides = {}) {
   return ExperimentConfig::from(c);
 }
 
-// Records what the stage ends show.
+// Records what the stage ends show, and the walls' vertical load averaged over the last steps
+// of spin-up. One step's load is a poor measure of what the walls carry: it is the weight less
+// the rate of change of the bed's momentum, and a few rattling particles make that swing by
+// several per cent from one step to the next (a perturbation of 1e-14 in the wall forces moved the
+// one-step ratio between 0.994 and 1.041 in the periodic run). Over a window it is the weight less the change of
+// momentum across the window divided by its length: the creep of a bed at rest makes that small.
 struct LoadRecorder : ExperimentObserver {
+  static constexpr std::size_t kWindow = 2000;  // steps
   TrapdoorExperiment* experiment = nullptr;
   std::vector<Stage> finished;
-  double walls_vertical_load = 0.0;   // N, sum over all walls at the end of spin-up
+  double walls_vertical_load = 0.0;   // N, summed over all walls, mean over the window ending spin-up
   double weight = 0.0;                // N, at the final gravity
+  std::size_t window_steps = 0;
   std::size_t snapshots = 0;
+  std::deque<double> recent;          // N, the walls' vertical load of each of the last kWindow steps
 
+  double vertical_load() const {
+    double load = 0.0;
+    for (const Wall& w : experiment->simulation().walls()) load -= w.force.z;
+    return load;
+  }
+  // Asked before every step: the load of the step just taken.
+  bool checkpoint_due() override {
+    if (experiment->stage() != Stage::spin_up) return false;
+    recent.push_back(vertical_load());
+    if (recent.size() > kWindow) recent.pop_front();
+    return false;
+  }
   void stage_finished(Stage stage, const std::string&) override {
     finished.push_back(stage);
     if (stage != Stage::spin_up) return;
-    const Simulation& sim = experiment->simulation();
+    recent.push_back(vertical_load());  // the last step of spin-up
+    if (recent.size() > kWindow) recent.pop_front();
+    window_steps = recent.size();
     walls_vertical_load = 0.0;
-    for (const Wall& w : sim.walls()) walls_vertical_load -= w.force.z;
+    for (double load : recent) walls_vertical_load += load;
+    walls_vertical_load /= double(recent.size());
+    const Simulation& sim = experiment->simulation();
     weight = sim.particles().total_mass() * -sim.gravity().z;
   }
   void snapshot_due(const std::string&) override { ++snapshots; }
@@ -70,19 +95,25 @@ TEST(TinyRun, AllStagesLoadsAndArching) {
             (std::vector<Stage>{Stage::pluviation, Stage::settling, Stage::spin_up, Stage::lowering}));
   EXPECT_EQ(recorder.snapshots, 2u + 4u);  // end of pluviation and settling; 0, 1, 2, 4 mm
 
-  // At rest after spin-up the walls carry the weight at 50 g. The bed still creeps (kinetic
-  // energy ~1e-7 of the potential), and the sum is of one step's loads: 0.5 % allows for that.
-  EXPECT_NEAR(recorder.walls_vertical_load / recorder.weight, 1.0, 5e-3);
+  // At rest after spin-up the walls carry the weight at 50 g: the mean over the last 2000 steps
+  // (see LoadRecorder). 0.2 %: the bed still creeps (kinetic energy ~1e-7 of the potential); over
+  // ten runs that differ only in round-off (1e-15 to 7e-14 of the wall forces) the mean stayed
+  // within 0.07 % of the weight, here and in PeriodicDepthRunsAndTheBaseCarriesTheWeight.
+  EXPECT_EQ(recorder.window_steps, LoadRecorder::kWindow);
+  EXPECT_NEAR(recorder.walls_vertical_load / recorder.weight, 1.0, 2e-3);
 
   const auto& rows = experiment.ground_reaction();
   ASSERT_GE(rows.size(), 40u);
   const GroundReactionRow& before = rows.front();
-  // Before lowering the trapdoor carries the stress of the base beside it. The tiny box is four
-  // particles deep and the trapdoor four diameters wide: a few force chains decide each wall's
-  // load, and the side walls take part of the weight (Janssen), more near them than in the middle.
-  // 25 % covers that; the paper-sized presets agree far closer.
+  // Before lowering the trapdoor carries about the stress of the base beside it, somewhat more:
+  // the side walls take part of the weight (Janssen), more near them than in the middle where the
+  // trapdoor is. The tiny box is four particles deep and the trapdoor four diameters wide, so a few
+  // force chains decide each wall's load: over ten runs that differ only in round-off (1e-15 to
+  // 7e-14 of the wall forces) the ratio ranged over 1.06-1.54. A wall load lost or counted twice,
+  // or a sign wrong, falls far outside 0.8-1.9.
   const double base_stress = 0.5 * (before.base_left.stress + before.base_right.stress);
-  EXPECT_NEAR(before.trapdoor.stress / base_stress, 1.0, 0.25);
+  EXPECT_GT(before.trapdoor.stress / base_stress, 0.8);
+  EXPECT_LT(before.trapdoor.stress / base_stress, 1.9);
   EXPECT_GT(before.geostatic_stress, 0.0);
   // Arching: at 1-3 % of the trapdoor width the trapdoor carries well under half its initial stress.
   const double b = experiment.config().trapdoor.width;
@@ -177,6 +208,7 @@ TEST(TinyRun, PeriodicDepthRunsAndTheBaseCarriesTheWeight) {
   recorder.experiment = &experiment;
   ASSERT_TRUE(experiment.run(recorder));
   EXPECT_EQ(recorder.finished.size(), 4u);
-  // Same tolerance and reason as in AllStagesLoadsAndArching.
-  EXPECT_NEAR(recorder.walls_vertical_load / recorder.weight, 1.0, 5e-3);
+  // Same measure, tolerance and reason as in AllStagesLoadsAndArching.
+  EXPECT_EQ(recorder.window_steps, LoadRecorder::kWindow);
+  EXPECT_NEAR(recorder.walls_vertical_load / recorder.weight, 1.0, 2e-3);
 }
