@@ -138,3 +138,33 @@ TEST(Rolling, ElasticPlasticRollsAwayAboveRollingLimit) {
   EXPECT_GT(r.shift, 1e-4);
   EXPECT_NEAR(r.acceleration, a, 1e-4 * a);
 }
+
+// Walls whose laws make different choices (here a ceiling without rolling resistance beside an
+// EPSD or constant-torque floor) send every wall contact through the law with run-time choices
+// instead of the vectorised one compiled for a single choice (src/dem/wall_batch.hpp). Both are
+// the same law: the sphere on the floor must end where it ends without the ceiling. Tolerance
+// 1e-9 relative: the two loops may contract multiply-adds differently (round-off, ~1e-16 per
+// step), amplified over the run; a law that read another wall's constants or choices would
+// differ at the first per cent.
+TEST(Rolling, WallsOfOtherRollingModelsLeaveTheFloorContactUnchanged) {
+  for (const RollingModel model : {RollingModel::constant_torque, RollingModel::elastic_plastic}) {
+    const ContactLaw law = rolling_law(model, 0.2);
+    ContactLaw ceiling_law = law;
+    ceiling_law.rolling_model = RollingModel::none;
+    ceiling_law.static_friction = ceiling_law.kinetic_friction = 0.1;
+    const double v0 = 0.05;
+    Simulation alone = sphere_on_floor(law, {v0, 0, 0}, {0, 0.5 * v0 / kRadius, 0});  // slips, then rolls
+    Simulation mixed = sphere_on_floor(law, {v0, 0, 0}, {0, 0.5 * v0 / kRadius, 0});
+    mixed.add_wall(Wall::plane("ceiling", {0, 0, 0.1}, {0, 0, -1}, ceiling_law));
+    const std::int64_t steps = std::llround(0.03 / alone.time_step());
+    alone.run(steps);
+    mixed.run(steps);
+    const Vec3 xa = alone.particles().position[0], xm = mixed.particles().position[0];
+    const Vec3 wa = alone.particles().angular_velocity[0], wm = mixed.particles().angular_velocity[0];
+    report("{}: x {:.9e} vs {:.9e} m, w_y {:.9e} vs {:.9e} rad/s", to_string(model), xa.x, xm.x, wa.y, wm.y);
+    EXPECT_GT(xa.x, 1e-4) << "the sphere should have moved";
+    EXPECT_NEAR(xm.x, xa.x, 1e-9 * std::fabs(xa.x)) << to_string(model);
+    EXPECT_NEAR(wm.y, wa.y, 1e-9 * std::fabs(wa.y) + 1e-12) << to_string(model);
+    EXPECT_NEAR(mixed.walls()[0].force.z, alone.walls()[0].force.z, 1e-9 * std::fabs(alone.walls()[0].force.z));
+  }
+}
