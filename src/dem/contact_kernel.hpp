@@ -2,7 +2,7 @@
 // The contact law, written once for particle-particle and particle-wall contacts.
 // A free function on plain values so that any back end (OpenMP loop now, GPU or MPI later)
 // can call it unchanged. The pair and wall kernels call it inside loops over batches of contacts
-// that the compiler vectorises (PairBatchLaw in simulation.cpp, WallBatchLaw in wall_batch.hpp):
+// that the compiler vectorises (PairBatchLaw in simulation.cpp, WallBatchLaw in contact_batch.hpp):
 // its branches on per-contact values must stay if-convertible (selects, no loads or stores of
 // memory under them).
 #include <algorithm>

@@ -346,22 +346,13 @@ void PairBatchLaw::run(ContactBatch& batch, std::uint32_t count, ContactConstant
     const Vec3 n_x_ft = cross(normal, cf.tangential);
     const Vec3 ti = cf.rolling_torque - b.arm_i * n_x_ft;
     const Vec3 tj = -cf.rolling_torque - b.arm_j * n_x_ft;
-    batch.force[0][q] = cf.force.x;
-    batch.force[1][q] = cf.force.y;
-    batch.force[2][q] = cf.force.z;
+    store_in_lane(batch, q, cf.force, h);
     batch.torque_owner[0][q] = ti.x;
     batch.torque_owner[1][q] = ti.y;
     batch.torque_owner[2][q] = ti.z;
     batch.torque_partner[0][q] = tj.x;
     batch.torque_partner[1][q] = tj.y;
     batch.torque_partner[2][q] = tj.z;
-    batch.spring[0][q] = h.tangential_spring.x;
-    batch.spring[1][q] = h.tangential_spring.y;
-    batch.spring[2][q] = h.tangential_spring.z;
-    batch.rolling_spring[0][q] = h.rolling_spring.x;
-    batch.rolling_spring[1][q] = h.rolling_spring.y;
-    batch.rolling_spring[2][q] = h.rolling_spring.z;
-    batch.flags[q] = h.flags;
   }
 }
 

@@ -11,7 +11,7 @@
 #include "dem/neighbor_list.hpp"
 #include "dem/particles.hpp"
 #include "dem/wall.hpp"
-#include "dem/wall_batch.hpp"
+#include "dem/contact_batch.hpp"
 
 namespace trapdem {
 
@@ -30,22 +30,6 @@ struct SimulationStats {
   std::int64_t rebuilds = 0;
   std::int64_t steps = 0;
   double rebuild_seconds = 0.0;  // s of wall-clock time in rebuilds, in this process (not checkpointed)
-};
-
-// The touching pairs of a stretch of a thread's block, gathered so that the contact law runs over
-// them as one vectorisable loop (structure of arrays, contact-major): see Simulation::contacts().
-struct ContactBatch {
-  static constexpr std::uint32_t kCapacity = 64;
-  alignas(64) std::uint32_t owner[kCapacity];
-  alignas(64) std::uint32_t partner[kCapacity];
-  alignas(64) std::uint32_t history_in[kCapacity];   // index of the pair's history of the last step
-  alignas(64) std::uint32_t history_out[kCapacity];  // where this step's goes
-  alignas(64) double separation[3][kCapacity];  // m, x_owner - x_partner (minimum image)
-  alignas(64) double overlap_ratio[kCapacity];  // overlap / smaller radius
-  alignas(64) double force[3][kCapacity];       // N, on the owner
-  alignas(64) double torque_owner[3][kCapacity], torque_partner[3][kCapacity];  // N m
-  alignas(64) double spring[3][kCapacity], rolling_spring[3][kCapacity];       // the new history
-  alignas(64) std::uint32_t flags[kCapacity];
 };
 
 class Simulation {

@@ -141,7 +141,7 @@ TEST(Rolling, ElasticPlasticRollsAwayAboveRollingLimit) {
 
 // Walls whose laws make different choices (here a ceiling without rolling resistance beside an
 // EPSD or constant-torque floor) send every wall contact through the law with run-time choices
-// instead of the vectorised one compiled for a single choice (src/dem/wall_batch.hpp). Both are
+// instead of the vectorised one compiled for a single choice (src/dem/contact_batch.hpp). Both are
 // the same law: the sphere on the floor must end where it ends without the ceiling. Tolerance
 // 1e-9 relative: the two loops may contract multiply-adds differently (round-off, ~1e-16 per
 // step), amplified over the run; a law that read another wall's constants or choices would

@@ -1,7 +1,7 @@
 #pragma once
-// Particle-wall contacts gathered in batches, so that the contact law runs over them as one loop
-// the compiler vectorises, as the pair kernel does (Simulation::contacts()). The geometry (closest
-// point, hidden seams) is found per particle before, the shares are added in contact order after.
+// Contacts gathered in batches, so that the contact law runs over them as one loop the compiler
+// vectorises (structure of arrays, contact-major): the pairs' (ContactBatch) and the walls'
+// (WallBatch). Simulation::contacts() fills them, runs the law and adds the shares in contact order.
 #include <cstdint>
 #include <vector>
 
@@ -11,6 +11,23 @@
 
 namespace trapdem {
 
+// The touching pairs of a stretch of a thread's block, gathered so that the contact law runs over
+// them as one vectorisable loop (structure of arrays, contact-major): see Simulation::contacts().
+struct ContactBatch {
+  static constexpr std::uint32_t kCapacity = 64;
+  alignas(64) std::uint32_t owner[kCapacity];
+  alignas(64) std::uint32_t partner[kCapacity];
+  alignas(64) std::uint32_t history_in[kCapacity];   // index of the pair's history of the last step
+  alignas(64) std::uint32_t history_out[kCapacity];  // where this step's goes
+  alignas(64) double separation[3][kCapacity];  // m, x_owner - x_partner (minimum image)
+  alignas(64) double overlap_ratio[kCapacity];  // overlap / smaller radius
+  alignas(64) double force[3][kCapacity];       // N, on the owner
+  alignas(64) double torque_owner[3][kCapacity], torque_partner[3][kCapacity];  // N m
+  alignas(64) double spring[3][kCapacity], rolling_spring[3][kCapacity];       // the new history
+  alignas(64) std::uint32_t flags[kCapacity];
+};
+
+// Particle-wall contacts: the geometry (closest point, hidden seams) is found per particle before.
 struct WallBatch {
   static constexpr std::uint32_t kCapacity = 64;
   std::uint32_t count = 0;
@@ -58,6 +75,22 @@ struct WallLaws {
   }
 };
 
+// A contact's force on its first body and its new history, into lane q of either batch.
+template <class Batch>
+[[gnu::always_inline]] inline void store_in_lane(Batch& batch, std::uint32_t q, const Vec3& force,
+                                                 const ContactHistory& h) {
+  batch.force[0][q] = force.x;
+  batch.force[1][q] = force.y;
+  batch.force[2][q] = force.z;
+  batch.spring[0][q] = h.tangential_spring.x;
+  batch.spring[1][q] = h.tangential_spring.y;
+  batch.spring[2][q] = h.tangential_spring.z;
+  batch.rolling_spring[0][q] = h.rolling_spring.x;
+  batch.rolling_spring[1][q] = h.rolling_spring.y;
+  batch.rolling_spring[2][q] = h.rolling_spring.z;
+  batch.flags[q] = h.flags;
+}
+
 // The particle data the laws read.
 struct BodyArrays {
   const double* __restrict radius;
@@ -89,19 +122,10 @@ struct BodyArrays {
   const ContactForce cf = contact_force(c, b, n, ri - dist, body.velocity[i] - wall_velocity,
                                         body.angular_velocity[i], Vec3{}, h, dt);
   const Vec3 torque = cf.rolling_torque - dist * cross(n, cf.tangential);
-  batch.force[0][q] = cf.force.x;
-  batch.force[1][q] = cf.force.y;
-  batch.force[2][q] = cf.force.z;
+  store_in_lane(batch, q, cf.force, h);
   batch.torque[0][q] = torque.x;
   batch.torque[1][q] = torque.y;
   batch.torque[2][q] = torque.z;
-  batch.spring[0][q] = h.tangential_spring.x;
-  batch.spring[1][q] = h.tangential_spring.y;
-  batch.spring[2][q] = h.tangential_spring.z;
-  batch.rolling_spring[0][q] = h.rolling_spring.x;
-  batch.rolling_spring[1][q] = h.rolling_spring.y;
-  batch.rolling_spring[2][q] = h.rolling_spring.z;
-  batch.flags[q] = h.flags;
 }
 
 // The law over the batch with the choices compiled in (all walls make the same choices): one
