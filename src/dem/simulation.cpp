@@ -113,13 +113,12 @@ void Simulation::run(std::int64_t steps) {
 void Simulation::step() {
   if (!setup_done_) {  // forces of the initial state, so the first half kick sees them
     rebuild_lists();
-    contacts();
+    contacts(false);
     setup_done_ = true;
   }
   integrate_positions();
   update_neighbours_if_needed();
-  contacts();
-  integrate_velocities();
+  contacts(true);  // with the second half kick
   ++stats_.steps;
   check_stability();
 }
@@ -128,6 +127,18 @@ void Simulation::find_particles_near_walls() {
   particles_near_walls_.clear();
   for (std::uint32_t i = 0; i + 1 < wall_list_.first.size(); ++i)
     if (wall_list_.first[i + 1] > wall_list_.first[i]) particles_near_walls_.push_back(i);
+}
+
+// partner_reach_[i]: one past the highest partner of the owners below i (0 when none), for the
+// second half kick in the sweep (Simulation::contacts).
+void Simulation::find_partner_reach() {
+  const std::size_t n = pairs_.first.empty() ? 0 : pairs_.first.size() - 1;
+  partner_reach_.assign(n + 1, 0);
+  for (std::size_t i = 0; i < n; ++i) {
+    const std::uint32_t highest =
+        pairs_.first[i + 1] > pairs_.first[i] ? pairs_.partner[pairs_.first[i + 1] - 1] + 1 : 0;
+    partner_reach_[i + 1] = std::max(partner_reach_[i], highest);
+  }
 }
 
 // Room for a history per listed pair in both arrays (a thread's block writes from index
@@ -287,6 +298,7 @@ void Simulation::rebuild_lists() {
   archive.restore_walls(wall_list_, p_.id);
 
   find_particles_near_walls();
+  find_partner_reach();
   position_at_build_ = p_.position;
   wall_displacement_at_build_.resize(walls_.size());
   for (std::size_t k = 0; k < walls_.size(); ++k) wall_displacement_at_build_[k] = walls_[k].displacement;
@@ -489,7 +501,28 @@ void add_batch_shares(const ContactBatch& __restrict batch, std::uint32_t count,
 // The wall contacts of the block's particles are added in the same sweep, as soon as a particle's
 // pairs are all done (its data is still in cache then; a pass of its own re-read it from memory at
 // 80k particles). Each thread sums its own wall loads; the threads' sums are added in thread order.
-void Simulation::contacts() {
+namespace {
+// The second half kick of velocity Verlet for one particle whose force is complete: v += dt/2
+// (F/m + g), w += dt/2 T/I. Returns 1 when the result is not finite.
+struct SecondHalfKick {
+  Vec3* __restrict v;
+  Vec3* __restrict w;
+  const Vec3* __restrict f;
+  const Vec3* __restrict t;
+  const double* __restrict inv_m;
+  const double* __restrict inv_i;
+  Vec3 g;
+  double half;
+  bool rotate;
+  int operator()(std::size_t p) const {
+    v[p] += half * (f[p] * inv_m[p] + g);
+    if (rotate) w[p] += (half * inv_i[p]) * t[p];
+    return is_finite(v[p]) && is_finite(w[p]) ? 0 : 1;
+  }
+};
+}  // namespace
+
+void Simulation::contacts(bool kick) {
   const std::size_t n = p_.size();
   const ContactConstants c = constants_;
   const Domain dom = settings_.domain;
@@ -521,7 +554,14 @@ void Simulation::contacts() {
   const std::uint32_t* near_walls = particles_near_walls_.data();
   const std::uint32_t* near_walls_end = near_walls + particles_near_walls_.size();
   double max_overlap = 0.0;
-#pragma omp parallel reduction(max : max_overlap)
+  // The second half kick (kick = true) is given to each particle in the sweep as soon as its force
+  // is complete: its own pairs, its shares as a partner, its walls. A particle that is the partner
+  // of an earlier thread's owner receives that share after the sweep: it and every particle below
+  // the highest such partner (partner_reach_) are kicked then.
+  const SecondHalfKick second_half_kick{p_.velocity.data(), p_.angular_velocity.data(), f, t, p_.inv_mass.data(),
+                                        inv_i, gravity(), 0.5 * dt, !settings_.freeze_rotation};
+  int any_bad = 0;
+#pragma omp parallel reduction(max : max_overlap) reduction(| : any_bad)
   {
     const int team = omp_get_num_threads(), me = omp_get_thread_num();
     const std::size_t begin = n * std::size_t(me) / std::size_t(team);
@@ -551,6 +591,10 @@ void Simulation::contacts() {
     // summed and added once its last pair is done (a batch may end within an owner's pairs): the
     // same order of additions as a loop over the pairs owner by owner.
     const SweepPrefetch ahead_of{v, w, f, t, history, next_history};
+    std::size_t next_kick = kick ? std::min(end, std::max<std::size_t>(begin, partner_reach_[begin])) : end;
+    auto kick_before = [&](std::size_t limit) {  // the particles before `limit` are complete
+      for (; next_kick < limit; ++next_kick) any_bad |= second_half_kick(next_kick);
+    };
     PairCursor at{begin, 0};
     std::uint32_t next_contact = first[begin];  // this block's part of next_history
     OwnerSums sums{begin, Vec3{}, Vec3{}};
@@ -563,6 +607,7 @@ void Simulation::contacts() {
       batch_law(batch, count, c, r, m, inv_i, v, w, history, dt);
       add_batch_shares(batch, count, end, f, t, next_history, sums, later, max_overlap);
       walls_before(sums.owner);  // the particles before the current owner have all their pair shares
+      kick_before(wall_batch.count > 0 ? std::min<std::size_t>(sums.owner, wall_batch.particle[0]) : sums.owner);
     }
     if (begin < end) {
       f[sums.owner] += sums.force;
@@ -570,11 +615,27 @@ void Simulation::contacts() {
     }
     walls_before(end);
     wall_forces(wall_batch, wall_law, my_wall_loads, max_overlap);
+    kick_before(end);
   }
   for (const auto& shares : deferred_) {
     for (const PartnerShare& s : shares) {
       f[s.particle] += s.force;
       t[s.particle] += s.torque;
+    }
+  }
+  if (kick) {  // the particles that received a share after the sweep, block by block
+    for (int th = 0; th < threads; ++th) {
+      const std::size_t begin = n * std::size_t(th) / std::size_t(threads);
+      const std::size_t end = n * std::size_t(th + 1) / std::size_t(threads);
+      const std::size_t reach = std::min(end, std::max<std::size_t>(begin, partner_reach_[begin]));
+      for (std::size_t p = begin; p < reach; ++p) any_bad |= second_half_kick(p);
+    }
+  }
+  bad_particle_ = -1;
+  for (std::size_t i = 0; any_bad && i < n; ++i) {
+    if (!is_finite(p_.velocity[i]) || !is_finite(p_.angular_velocity[i])) {
+      bad_particle_ = std::int64_t(i);
+      break;
     }
   }
   contacts_.swap(contacts_next_);
@@ -676,33 +737,6 @@ void Simulation::wall_forces(WallBatch& batch, WallBatchLaw::Fn law, Vec3* load,
   batch.count = 0;
 }
 
-void Simulation::integrate_velocities() {
-  const double half = 0.5 * dt_;
-  const Vec3 g = gravity();
-  const bool rotate = !settings_.freeze_rotation;
-  const std::size_t n = p_.size();
-  Vec3* v = p_.velocity.data();
-  Vec3* w = p_.angular_velocity.data();
-  const Vec3* f = p_.force.data();
-  const Vec3* t = p_.torque.data();
-  const double* inv_m = p_.inv_mass.data();
-  const double* inv_i = p_.inv_inertia.data();
-  int any_bad = 0;  // as in integrate_positions: a flag, then which particle
-#pragma omp parallel for simd schedule(static) reduction(| : any_bad)
-  for (std::size_t i = 0; i < n; ++i) {
-    v[i] += half * (f[i] * inv_m[i] + g);
-    if (rotate) w[i] += (half * inv_i[i]) * t[i];
-    any_bad |= is_finite(v[i]) && is_finite(w[i]) ? 0 : 1;
-  }
-  bad_particle_ = -1;
-  for (std::size_t i = 0; any_bad && i < n; ++i) {
-    if (!is_finite(v[i]) || !is_finite(w[i])) {
-      bad_particle_ = std::int64_t(i);
-      break;
-    }
-  }
-}
-
 std::string Simulation::describe_particle(std::uint32_t i) const {
   const Vec3& x = p_.position[i];
   const Vec3& v = p_.velocity[i];
@@ -790,6 +824,7 @@ void Simulation::restore(double time, const SimulationStats& stats, ListState li
   rebuilds_since_reorder_ = lists.rebuilds_since_reorder;
   compact_pair_history();
   find_particles_near_walls();
+  find_partner_reach();
   history_pending_ = false;
   lists_valid_ = true;
   setup_done_ = true;

@@ -95,13 +95,13 @@ class Simulation {
   void integrate_positions();
   void update_neighbours_if_needed();
   void rebuild_lists();
-  void contacts();  // particle pairs and walls
+  void contacts(bool kick);  // particle pairs and walls; with kick, the second half kick too
   void collect_wall_contacts(std::uint32_t i, WallBatch& batch);
   void wall_forces(WallBatch& batch, WallBatchLaw::Fn law, Vec3* load, double& max_overlap);
-  void integrate_velocities();
   void check_stability() const;
   void invalidate_lists() { lists_valid_ = false; }
   void find_particles_near_walls();
+  void find_partner_reach();
   void size_contact_arrays();
   void compact_pair_history();
   std::string describe_particle(std::uint32_t i) const;
@@ -132,6 +132,7 @@ class Simulation {
   std::vector<ContactBatch> batches_;                 // one per thread
   std::vector<WallBatch> wall_batches_;               // one per thread
   std::vector<std::uint32_t> particles_near_walls_;  // ascending
+  std::vector<std::uint32_t> partner_reach_;         // per owner: one past the highest partner of those below
   std::vector<Vec3> wall_loads_;                     // per thread and wall: force, torque
   // The touching pairs' contact histories, compact (most listed pairs do not touch):
   // pair_contact_[k] is pair k's index into contacts_, or kNoContact. Each step writes them anew,
