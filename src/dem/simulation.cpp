@@ -487,20 +487,6 @@ void add_batch_shares(const ContactBatch& __restrict batch, std::uint32_t count,
 }
 }  // namespace
 
-// The pair kernel over the half list, contact-major. Particles are in cell order and each
-// thread owns a contiguous block of them. A first loop walks the block's listed pairs, tests
-// touching and appends the touching ones to a batch without a branch (about a third of the
-// listed pairs touch, at random: a branch on it mispredicts). Each full batch then runs the
-// contact law as one loop over its contacts that the compiler vectorises (the law's branches
-// become selects), and a last, scalar loop stores the histories and adds the forces in pair order.
-// A pair's owner (first body) is in the thread's block and its partner (second body, higher
-// index) usually is too: then both shares are added at once. A partner in a later thread's block
-// receives its share after the loop, from a per-thread list, in thread order. The sums are
-// therefore the same every time for a given thread count; another thread count changes only the
-// order of a few additions (round-off).
-// The wall contacts of the block's particles are added in the same sweep, as soon as a particle's
-// pairs are all done (its data is still in cache then; a pass of its own re-read it from memory at
-// 80k particles). Each thread sums its own wall loads; the threads' sums are added in thread order.
 namespace {
 // The second half kick of velocity Verlet for one particle whose force is complete: v += dt/2
 // (F/m + g), w += dt/2 T/I. Returns 1 when the result is not finite.
@@ -522,6 +508,22 @@ struct SecondHalfKick {
 };
 }  // namespace
 
+// The pair kernel over the half list, contact-major. Particles are in cell order and each
+// thread owns a contiguous block of them. A first loop walks the block's listed pairs, tests
+// touching and appends the touching ones to a batch without a branch (about a third of the
+// listed pairs touch, at random: a branch on it mispredicts). Each full batch then runs the
+// contact law as one loop over its contacts that the compiler vectorises (the law's branches
+// become selects), and a last, scalar loop stores the histories and adds the forces in pair order.
+// A pair's owner (first body) is in the thread's block and its partner (second body, higher
+// index) usually is too: then both shares are added at once. A partner in a later thread's block
+// receives its share after the loop, from a per-thread list, in thread order. The sums are
+// therefore the same every time for a given thread count; another thread count changes only the
+// order of a few additions (round-off).
+// The wall contacts of the block's particles are found in the same sweep, as soon as a particle's
+// pairs are all done (its data is still in cache then; a pass of its own re-read it from memory at
+// 80k particles), and run through the law in batches of their own. Each thread sums its own wall
+// loads; the threads' sums are added in thread order. With `kick`, each particle also gets the
+// second half kick of the step as soon as its force is complete.
 void Simulation::contacts(bool kick) {
   const std::size_t n = p_.size();
   const ContactConstants c = constants_;
