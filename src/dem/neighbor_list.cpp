@@ -101,21 +101,18 @@ std::size_t HistoryArchive::restore_pairs(const PairList& list, const std::vecto
   constexpr std::uint32_t kFlip = 1u << 31;
   std::vector<std::uint32_t> start(n + 2, 0);
   std::vector<std::uint32_t> owner(pairs.size(), IndexOfId::kAbsent);
-  std::vector<std::uint32_t> partner_of(pairs.size());
+  std::vector<Placed> entry(pairs.size());
   for (std::size_t r = 0; r < pairs.size(); ++r) {
     const std::uint32_t a = index_of(pairs[r].low), b = index_of(pairs[r].high);
     if (a == IndexOfId::kAbsent || b == IndexOfId::kAbsent) continue;  // a particle removed
     owner[r] = std::min(a, b);
-    partner_of[r] = std::max(a, b);
+    entry[r] = {std::max(a, b), std::uint32_t(r) | (a > b ? kFlip : 0u)};
     ++start[owner[r] + 2];
   }
   std::partial_sum(start.begin(), start.end(), start.begin());
   std::vector<Placed> placed(start[n + 1]);
-  for (std::size_t r = 0; r < pairs.size(); ++r) {
-    if (owner[r] == IndexOfId::kAbsent) continue;
-    const bool flip = owner[r] != index_of(pairs[r].low);
-    placed[start[owner[r] + 1]++] = {partner_of[r], std::uint32_t(r) | (flip ? kFlip : 0u)};
-  }
+  for (std::size_t r = 0; r < pairs.size(); ++r)
+    if (owner[r] != IndexOfId::kAbsent) placed[start[owner[r] + 1]++] = entry[r];
   std::uint32_t found = 0;
   for (std::size_t i = 0; i < n; ++i) {
     Placed* mine = placed.data() + start[i];
