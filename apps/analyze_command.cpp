@@ -7,7 +7,7 @@
 
 #include "analysis/analysis_output.hpp"
 #include "analysis/length_text.hpp"
-#include "dem/errors.hpp"
+#include "core/errors.hpp"
 #include "experiment/experiment_config.hpp"
 #include "experiment/ground_reaction.hpp"
 #include "io/config.hpp"

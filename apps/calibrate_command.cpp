@@ -9,7 +9,7 @@
 
 #include "analysis/length_text.hpp"
 #include "compare_command.hpp"
-#include "dem/errors.hpp"
+#include "core/errors.hpp"
 #include "io/atomic_file.hpp"
 #include "io/text_file.hpp"
 #include "plot/error_surface.hpp"

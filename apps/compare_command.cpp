@@ -8,7 +8,7 @@
 #include "analysis/json.hpp"
 #include "analysis/length_text.hpp"
 #include "analyze_command.hpp"
-#include "dem/errors.hpp"
+#include "core/errors.hpp"
 #include "io/snapshot.hpp"
 #include "plot/comparison_figure.hpp"
 

@@ -10,7 +10,7 @@
 #include <opencv2/imgcodecs.hpp>
 
 #include "analyze_command.hpp"
-#include "dem/errors.hpp"
+#include "core/errors.hpp"
 #include "io/atomic_file.hpp"
 #include "io/snapshot.hpp"
 #include "piv/dem_camera.hpp"

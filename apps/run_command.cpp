@@ -12,7 +12,7 @@
 #include <fmt/format.h>
 
 #include "analysis/json.hpp"
-#include "dem/errors.hpp"
+#include "core/errors.hpp"
 #include "experiment/trapdoor_experiment.hpp"
 #include "io/atomic_file.hpp"
 #include "io/checkpoint.hpp"

@@ -6,7 +6,7 @@
 
 #include "analysis/length_text.hpp"
 #include "analysis/sinkhole.hpp"
-#include "dem/errors.hpp"
+#include "core/errors.hpp"
 
 namespace trapdem::app {
 

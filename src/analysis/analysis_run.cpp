@@ -11,7 +11,7 @@
 #include "analysis/horizontal_profile.hpp"
 #include "analysis/length_text.hpp"
 #include "analysis/total_strain.hpp"
-#include "dem/errors.hpp"
+#include "core/errors.hpp"
 
 namespace trapdem {
 

@@ -6,7 +6,7 @@
 #include <unordered_set>
 #include <vector>
 
-#include "dem/errors.hpp"
+#include "core/errors.hpp"
 #include "io/text.hpp"
 
 namespace trapdem {

@@ -5,7 +5,7 @@
 #include <fmt/format.h>
 #include <limits>
 
-#include "dem/errors.hpp"
+#include "core/errors.hpp"
 #include "io/text.hpp"
 
 namespace trapdem {

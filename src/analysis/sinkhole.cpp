@@ -8,7 +8,7 @@
 #include <sstream>
 
 #include "analysis/length_text.hpp"
-#include "dem/errors.hpp"
+#include "core/errors.hpp"
 #include "io/config.hpp"
 #include "io/text_file.hpp"
 

@@ -2,7 +2,7 @@
 
 #include <cmath>
 
-#include "dem/errors.hpp"
+#include "core/errors.hpp"
 #include "io/text_file.hpp"
 
 namespace trapdem {

@@ -6,7 +6,7 @@
 
 #include "analysis/length_text.hpp"
 #include "io/atomic_file.hpp"
-#include "io/file_error.hpp"
+#include "core/errors.hpp"
 #include "plot/colour_map.hpp"
 #include "plot/line_chart.hpp"
 #include "plot/specimen_figures.hpp"

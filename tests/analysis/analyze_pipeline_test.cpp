@@ -12,7 +12,7 @@
 #include "analysis/json.hpp"
 #include "analysis/length_text.hpp"
 #include "analyze_command.hpp"
-#include "dem/errors.hpp"
+#include "core/errors.hpp"
 #include "synthetic_run.hpp"
 
 using namespace trapdem;

@@ -9,7 +9,7 @@
 
 #include "analysis/dem_piv_comparison.hpp"
 #include "compare_command.hpp"
-#include "dem/errors.hpp"
+#include "core/errors.hpp"
 #include "piv/piv_output.hpp"
 #include "synthetic_run.hpp"
 

@@ -7,7 +7,7 @@
 
 #include "analysis/analysis_run.hpp"
 #include "analysis/dump_reader.hpp"
-#include "dem/errors.hpp"
+#include "core/errors.hpp"
 
 using namespace trapdem;
 

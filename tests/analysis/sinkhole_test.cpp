@@ -11,7 +11,7 @@
 
 #include "analysis/json.hpp"
 #include "analysis/sinkhole.hpp"
-#include "dem/errors.hpp"
+#include "core/errors.hpp"
 #include "sinkhole_command.hpp"
 
 namespace fs = std::filesystem;

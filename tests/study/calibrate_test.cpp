@@ -10,7 +10,7 @@
 #include <fmt/format.h>
 
 #include "calibrate_command.hpp"
-#include "dem/errors.hpp"
+#include "core/errors.hpp"
 #include "experiment/experiment_config.hpp"
 #include "io/config.hpp"
 #include "io/text_file.hpp"

@@ -5,7 +5,7 @@
 #include <filesystem>
 #include <fstream>
 
-#include "dem/errors.hpp"
+#include "core/errors.hpp"
 #include "io/config.hpp"
 #include "run_command.hpp"
 #include "study/study_definition.hpp"

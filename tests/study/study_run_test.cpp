@@ -17,7 +17,7 @@
 #include <thread>
 
 #include "analysis/json.hpp"
-#include "dem/errors.hpp"
+#include "core/errors.hpp"
 #include "io/text_file.hpp"
 #include "study_command.hpp"
 

@@ -1,5 +1,11 @@
 #pragma once
+// The error types every module throws, so that the command can tell the user what to fix:
+// InputError (the configuration or a command-line value), SimulationError (a run that cannot go
+// on), FileError (the disk: a file that cannot be read or written).
 #include <stdexcept>
+
+// SimulationError and InputError are defined with the engine until its files include this header.
+#include "dem/errors.hpp"
 
 namespace trapdem {
 
