@@ -6,7 +6,7 @@
 #include <limits>
 
 #include "core/errors.hpp"
-#include "io/text.hpp"
+#include "core/text_escape.hpp"
 
 namespace trapdem {
 
