@@ -5,7 +5,7 @@
 #include <fmt/format.h>
 
 #include "analysis/grid_interpolation.hpp"
-#include "analysis/json.hpp"
+#include "core/json.hpp"
 #include "analysis/length_text.hpp"
 #include "analyze_command.hpp"
 #include "core/errors.hpp"

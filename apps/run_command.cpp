@@ -11,7 +11,7 @@
 
 #include <fmt/format.h>
 
-#include "analysis/json.hpp"
+#include "core/json.hpp"
 #include "core/errors.hpp"
 #include "experiment/trapdoor_experiment.hpp"
 #include "io/atomic_file.hpp"

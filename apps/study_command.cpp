@@ -10,7 +10,7 @@
 
 #include "analysis/analysis_output.hpp"
 #include "analysis/length_text.hpp"
-#include "analysis/json.hpp"
+#include "core/json.hpp"
 #include "analysis/sinkhole.hpp"
 #include "analyze_command.hpp"
 #include "core/errors.hpp"

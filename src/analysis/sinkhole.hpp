@@ -18,7 +18,7 @@
 #include <string_view>
 #include <vector>
 
-#include "analysis/json.hpp"
+#include "core/json.hpp"
 
 namespace trapdem {
 

@@ -9,7 +9,7 @@
 
 #include <gtest/gtest.h>
 
-#include "analysis/json.hpp"
+#include "core/json.hpp"
 #include "analysis/sinkhole.hpp"
 #include "core/errors.hpp"
 #include "sinkhole_command.hpp"

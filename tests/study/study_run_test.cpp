@@ -16,7 +16,7 @@
 #include <regex>
 #include <thread>
 
-#include "analysis/json.hpp"
+#include "core/json.hpp"
 #include "core/errors.hpp"
 #include "io/text_file.hpp"
 #include "study_command.hpp"
