@@ -6,7 +6,7 @@
 #include <sstream>
 
 #include "analysis/analysis_output.hpp"
-#include "analysis/length_text.hpp"
+#include "core/length_text.hpp"
 #include "core/errors.hpp"
 #include "experiment/experiment_config.hpp"
 #include "experiment/ground_reaction.hpp"
@@ -18,19 +18,6 @@
 namespace fs = std::filesystem;
 
 namespace trapdem::app {
-
-std::vector<double> parse_length_list(const std::string& text, const std::string& what) {
-  std::vector<double> out;
-  std::size_t start = 0;
-  while (start <= text.size()) {
-    std::size_t end = text.find(',', start);
-    if (end == std::string::npos) end = text.size();
-    const std::string item = text.substr(start, end - start);
-    if (item.find_first_not_of(" \t") != std::string::npos) out.push_back(parse_length(item, what));
-    start = end + 1;
-  }
-  return out;
-}
 
 AnalysisSettings analysis_settings(const AnalyzeOptions& o) {
   AnalysisSettings s;

@@ -53,7 +53,4 @@ struct FigureOptions {
 
 int run_figure(const FigureOptions& options);
 
-// Splits "0mm, 10 mm,0.02" at commas and parses each as a length.
-std::vector<double> parse_length_list(const std::string& text, const std::string& what);
-
 }  // namespace trapdem::app

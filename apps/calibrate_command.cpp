@@ -7,7 +7,7 @@
 
 #include <fmt/format.h>
 
-#include "analysis/length_text.hpp"
+#include "core/length_text.hpp"
 #include "compare_command.hpp"
 #include "core/errors.hpp"
 #include "io/atomic_file.hpp"

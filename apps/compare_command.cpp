@@ -6,7 +6,7 @@
 
 #include "analysis/grid_interpolation.hpp"
 #include "core/json.hpp"
-#include "analysis/length_text.hpp"
+#include "core/length_text.hpp"
 #include "analyze_command.hpp"
 #include "core/errors.hpp"
 #include "io/snapshot.hpp"

@@ -4,7 +4,7 @@
 #include <cstdio>
 #include <fmt/format.h>
 
-#include "analysis/length_text.hpp"
+#include "core/length_text.hpp"
 #include "analysis/sinkhole.hpp"
 #include "core/errors.hpp"
 

@@ -9,7 +9,7 @@
 #include <fmt/format.h>
 
 #include "analysis/analysis_output.hpp"
-#include "analysis/length_text.hpp"
+#include "core/length_text.hpp"
 #include "core/json.hpp"
 #include "analysis/sinkhole.hpp"
 #include "analyze_command.hpp"

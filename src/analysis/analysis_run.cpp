@@ -9,7 +9,7 @@
 #include "analysis/dump_reader.hpp"
 #include "analysis/grid_interpolation.hpp"
 #include "analysis/horizontal_profile.hpp"
-#include "analysis/length_text.hpp"
+#include "core/length_text.hpp"
 #include "analysis/total_strain.hpp"
 #include "core/errors.hpp"
 

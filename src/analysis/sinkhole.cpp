@@ -7,7 +7,7 @@
 #include <numbers>
 #include <sstream>
 
-#include "analysis/length_text.hpp"
+#include "core/length_text.hpp"
 #include "core/errors.hpp"
 #include "io/config.hpp"
 #include "io/text_file.hpp"

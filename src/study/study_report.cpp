@@ -4,7 +4,7 @@
 
 #include <fmt/format.h>
 
-#include "analysis/length_text.hpp"
+#include "core/length_text.hpp"
 #include "io/atomic_file.hpp"
 #include "core/errors.hpp"
 #include "core/text_escape.hpp"

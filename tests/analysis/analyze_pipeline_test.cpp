@@ -10,7 +10,6 @@
 
 #include "analysis/analysis_output.hpp"
 #include "core/json.hpp"
-#include "analysis/length_text.hpp"
 #include "analyze_command.hpp"
 #include "core/errors.hpp"
 #include "synthetic_run.hpp"
@@ -130,16 +129,4 @@ TEST(AnalyzePipeline, MissingDisplacementNamesTheAvailableOnes) {
   o.view = "front";
   o.grid = "-2mm";
   EXPECT_THROW(app::run_analyze(o), InputError);
-}
-
-TEST(LengthText, ParsesUnitsAndRejectsNonsense) {
-  EXPECT_DOUBLE_EQ(parse_length("80mm", "--at"), 0.08);
-  EXPECT_DOUBLE_EQ(parse_length("10 mm", "--at"), 0.01);
-  EXPECT_DOUBLE_EQ(parse_length("0.08", "--at"), 0.08);
-  EXPECT_DOUBLE_EQ(parse_length("8cm", "--at"), 0.08);
-  EXPECT_DOUBLE_EQ(parse_length(" 1e-3 m ", "--at"), 0.001);
-  EXPECT_THROW(parse_length("80 furlongs", "--at"), InputError);
-  EXPECT_THROW(parse_length("mm", "--at"), InputError);
-  EXPECT_THROW(parse_length("", "--at"), InputError);
-  EXPECT_EQ(app::parse_length_list("0mm, 10 mm,0.02", "--displacements"), (std::vector<double>{0.0, 0.01, 0.02}));
 }
