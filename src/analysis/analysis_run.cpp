@@ -6,7 +6,7 @@
 #include <unordered_map>
 
 #include "analysis/delaunay.hpp"
-#include "analysis/dump_reader.hpp"
+#include "io/lammps_dump.hpp"
 #include "analysis/grid_interpolation.hpp"
 #include "analysis/horizontal_profile.hpp"
 #include "core/length_text.hpp"

@@ -1,4 +1,4 @@
-#include "analysis/dump_reader.hpp"
+#include "io/lammps_dump.hpp"
 
 #include <charconv>
 #include <fstream>
