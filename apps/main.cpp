@@ -40,7 +40,7 @@ int main(int argc, char** argv) {
   sc->add_option("--particles", showcase.particles, "Number of spheres")->check(CLI::PositiveNumber);
   sc->add_option("--threads", showcase.threads, "OpenMP threads (default: all cores)")->check(CLI::NonNegativeNumber);
 
-  trapdem::app::AnalyzeOptions analyze;
+  trapdem::AnalyzeOptions analyze;
   auto* an = app.add_subcommand("analyze", "Strain fields, shear bands and zone of influence of a run; writes DIR/analysis/");
   an->add_option("dir", analyze.dir, "Run folder (snapshots.h5, resolved.toml, trapdoor.csv)")->required();
   an->add_option("--at", analyze.at, "Trapdoor displacement to analyse, e.g. 80mm (default: the last snapshot)");
@@ -116,7 +116,7 @@ int main(int argc, char** argv) {
   render_cmd->add_option("--subset", render.subset, "--check subset size, px (default about 3 diameters)");
   render_cmd->add_option("--threads", render.threads, "OpenMP threads for --check")->check(CLI::NonNegativeNumber);
 
-  trapdem::app::CompareOptions compare;
+  trapdem::CompareOptions compare;
   auto* cmp_cmd = app.add_subcommand("compare", "DEM against PIV: vertical displacement on one grid, RMS error, overlay figure");
   cmp_cmd->add_option("dem_dir", compare.dem_dir, "DEM run folder (resolved.toml, snapshots.h5)")->required();
   cmp_cmd->add_option("piv_dir", compare.piv_dir, "PIV output folder (piv.h5 with model coordinates)")->required();

@@ -40,7 +40,7 @@ TEST(AnalyzePipeline, UniformVerticalStrainGivesThatStrainEverywhere) {
   const double eps = 0.01;
   const auto run = test::make_synthetic_run(scratch("uniform"), {0.0, 0.0005, 0.001},
                                             [&](Point2 p, double delta) { return Point2{0.0, -eps * p.z * delta / 0.001}; });
-  app::AnalyzeOptions o;
+  AnalyzeOptions o;
   o.dir = run.dir.string();
   o.at = "1mm";
   o.incremental = true;
@@ -86,7 +86,7 @@ TEST(AnalyzePipeline, TwoPlanarBandsGiveTheirAngleAndWidth) {
     return Point2{0.0, -delta * standard_normal_cdf(n_left / sigma) * standard_normal_cdf(n_right / sigma)};
   };
   const auto run = test::make_synthetic_run(scratch("bands"), {0.0, 0.005, 0.01}, field);
-  app::AnalyzeOptions o;
+  AnalyzeOptions o;
   o.dir = run.dir.string();
   o.at = "10 mm";
   o.reference = "0";
@@ -112,7 +112,7 @@ TEST(AnalyzePipeline, TwoPlanarBandsGiveTheirAngleAndWidth) {
 TEST(AnalyzePipeline, MissingDisplacementNamesTheAvailableOnes) {
   const auto run = test::make_synthetic_run(scratch("missing"), {0.0, 0.001},
                                             [](Point2, double delta) { return Point2{0.0, -delta}; }, 0.02);
-  app::AnalyzeOptions o;
+  AnalyzeOptions o;
   o.dir = run.dir.string();
   o.at = "80mm";
   o.quiet = true;
