@@ -142,7 +142,7 @@ int main(int argc, char** argv) {
   study_cmd->add_flag("--quiet", study.quiet, "Runs' progress lines only in their run.log");
   study_cmd->add_flag("--report-only", study.report_only, "Run nothing: report on the finished cases");
 
-  trapdem::app::CalibrateOptions calibrate;
+  trapdem::CalibrateOptions calibrate;
   auto* cal = app.add_subcommand("calibrate", "Run a parameter grid as a study and rank it against PIV (compare)");
   cal->add_option("base", calibrate.base, "Configuration file (TOML) the grid varies")->required()->check(CLI::ExistingFile);
   cal->add_option("--vary", calibrate.vary, "KEY=V1,V2,... (repeatable; every combination runs)")->required();
