@@ -5,7 +5,8 @@
 #include <fmt/format.h>
 
 #include "core/length_text.hpp"
-#include "analysis/sinkhole.hpp"
+#include "analysis/sinkhole_json.hpp"
+#include "study/sinkhole_run.hpp"
 #include "core/errors.hpp"
 
 namespace trapdem::app {

@@ -8,7 +8,7 @@
 #include <fmt/format.h>
 
 #include "analysis/analysis_output.hpp"
-#include "analysis/sinkhole.hpp"
+#include "study/sinkhole_run.hpp"
 #include "core/errors.hpp"
 #include "core/json.hpp"
 #include "core/length_text.hpp"

@@ -11,6 +11,7 @@
 
 #include "core/json.hpp"
 #include "analysis/sinkhole.hpp"
+#include "study/sinkhole_run.hpp"
 #include "core/errors.hpp"
 #include "sinkhole_command.hpp"
 
