@@ -4,10 +4,20 @@
 // on), FileError (the disk: a file that cannot be read or written).
 #include <stdexcept>
 
-// SimulationError and InputError are defined with the engine until its files include this header.
-#include "dem/errors.hpp"
-
 namespace trapdem {
+
+// A run that cannot go on: unstable integration, particles escaping, impossible input.
+// The message names what failed, where, and the likely cause.
+class SimulationError : public std::runtime_error {
+ public:
+  using std::runtime_error::runtime_error;
+};
+
+// Input that breaks a documented rule (configuration key, file line, parameter range).
+class InputError : public std::runtime_error {
+ public:
+  using std::runtime_error::runtime_error;
+};
 
 // A file that cannot be written or read as expected: unwritable folder, full disk, missing or
 // damaged file. The message names the path (and the dataset or key inside it) and the cause.
