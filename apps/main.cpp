@@ -7,8 +7,7 @@
 #include "analyze_command.hpp"
 #include "calibrate_command.hpp"
 #include "compare_command.hpp"
-#include "dem/errors.hpp"
-#include "io/file_error.hpp"
+#include "core/errors.hpp"
 #include "piv_command.hpp"
 #include "run_command.hpp"
 #include "showcase.hpp"
@@ -41,7 +40,7 @@ int main(int argc, char** argv) {
   sc->add_option("--particles", showcase.particles, "Number of spheres")->check(CLI::PositiveNumber);
   sc->add_option("--threads", showcase.threads, "OpenMP threads (default: all cores)")->check(CLI::NonNegativeNumber);
 
-  trapdem::app::AnalyzeOptions analyze;
+  trapdem::AnalyzeOptions analyze;
   auto* an = app.add_subcommand("analyze", "Strain fields, shear bands and zone of influence of a run; writes DIR/analysis/");
   an->add_option("dir", analyze.dir, "Run folder (snapshots.h5, resolved.toml, trapdoor.csv)")->required();
   an->add_option("--at", analyze.at, "Trapdoor displacement to analyse, e.g. 80mm (default: the last snapshot)");
@@ -117,7 +116,7 @@ int main(int argc, char** argv) {
   render_cmd->add_option("--subset", render.subset, "--check subset size, px (default about 3 diameters)");
   render_cmd->add_option("--threads", render.threads, "OpenMP threads for --check")->check(CLI::NonNegativeNumber);
 
-  trapdem::app::CompareOptions compare;
+  trapdem::CompareOptions compare;
   auto* cmp_cmd = app.add_subcommand("compare", "DEM against PIV: vertical displacement on one grid, RMS error, overlay figure");
   cmp_cmd->add_option("dem_dir", compare.dem_dir, "DEM run folder (resolved.toml, snapshots.h5)")->required();
   cmp_cmd->add_option("piv_dir", compare.piv_dir, "PIV output folder (piv.h5 with model coordinates)")->required();
@@ -143,7 +142,7 @@ int main(int argc, char** argv) {
   study_cmd->add_flag("--quiet", study.quiet, "Runs' progress lines only in their run.log");
   study_cmd->add_flag("--report-only", study.report_only, "Run nothing: report on the finished cases");
 
-  trapdem::app::CalibrateOptions calibrate;
+  trapdem::CalibrateOptions calibrate;
   auto* cal = app.add_subcommand("calibrate", "Run a parameter grid as a study and rank it against PIV (compare)");
   cal->add_option("base", calibrate.base, "Configuration file (TOML) the grid varies")->required()->check(CLI::ExistingFile);
   cal->add_option("--vary", calibrate.vary, "KEY=V1,V2,... (repeatable; every combination runs)")->required();

@@ -9,8 +9,8 @@
 #include <fmt/format.h>
 #include <opencv2/imgcodecs.hpp>
 
-#include "analyze_command.hpp"
-#include "dem/errors.hpp"
+#include "core/errors.hpp"
+#include "experiment/run_folder.hpp"
 #include "io/atomic_file.hpp"
 #include "io/snapshot.hpp"
 #include "piv/dem_camera.hpp"
@@ -18,6 +18,7 @@
 #include "piv/piv_output.hpp"
 #include "piv/run_piv.hpp"
 #include "piv/speckle_synthesis.hpp"
+#include "study/run_analysis.hpp"
 
 namespace fs = std::filesystem;
 
@@ -257,16 +258,16 @@ int run_synth_command(const SynthOptions& o) {
 }
 
 int run_render_command(const RenderOptions& o) {
-  const fs::path dir = o.dir;
-  const SpecimenGeometry g = load_specimen_geometry(o.config.empty() ? dir / "resolved.toml" : fs::path(o.config));
-  const fs::path h5 = dir / "snapshots.h5";
+  const RunFolder run(o.dir);
+  const SpecimenGeometry g = load_specimen_geometry(o.config.empty() ? run.resolved_toml() : fs::path(o.config));
+  const fs::path h5 = run.snapshots_h5();
   if (!fs::exists(h5)) throw InputError(fmt::format("{}: not found (run `trapdem run` first)", h5.string()));
   const std::vector<Snapshot> snapshots = read_snapshots(h5);
   if (snapshots.empty()) throw InputError(fmt::format("{}: no snapshots", h5.string()));
   CameraSettings cs;
   cs.front_wall_y = g.box_depth;
   const CameraView view = camera_view_for(snapshots, g.box_width, o.px_per_mm, cs);
-  const fs::path out = o.out.empty() ? dir / "camera" : fs::path(o.out);
+  const fs::path out = o.out.empty() ? run.camera_dir() : fs::path(o.out);
   fs::create_directories(out);
   std::vector<std::string> files;
   for (std::size_t k = 0; k < snapshots.size(); ++k) {

@@ -4,9 +4,10 @@
 #include <cstdio>
 #include <fmt/format.h>
 
-#include "analysis/length_text.hpp"
-#include "analysis/sinkhole.hpp"
-#include "dem/errors.hpp"
+#include "core/length_text.hpp"
+#include "analysis/sinkhole_json.hpp"
+#include "study/sinkhole_run.hpp"
+#include "core/errors.hpp"
 
 namespace trapdem::app {
 

@@ -16,7 +16,7 @@
 #include <exception>
 #include <string>
 
-#include "dem/errors.hpp"
+#include "core/errors.hpp"
 #include "dem/simulation.hpp"
 #include "io/lammps_data.hpp"
 

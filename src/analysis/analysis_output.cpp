@@ -3,7 +3,7 @@
 #include <cmath>
 #include <fmt/format.h>
 
-#include "analysis/length_text.hpp"
+#include "core/length_text.hpp"
 #include "io/atomic_file.hpp"
 #include "io/hdf5_file.hpp"
 

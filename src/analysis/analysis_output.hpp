@@ -7,7 +7,7 @@
 #include <string>
 
 #include "analysis/analysis_run.hpp"
-#include "analysis/json.hpp"
+#include "core/json.hpp"
 
 namespace trapdem {
 

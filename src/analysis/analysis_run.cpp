@@ -6,12 +6,12 @@
 #include <unordered_map>
 
 #include "analysis/delaunay.hpp"
-#include "analysis/dump_reader.hpp"
+#include "io/lammps_dump.hpp"
 #include "analysis/grid_interpolation.hpp"
 #include "analysis/horizontal_profile.hpp"
-#include "analysis/length_text.hpp"
+#include "core/length_text.hpp"
 #include "analysis/total_strain.hpp"
-#include "dem/errors.hpp"
+#include "core/errors.hpp"
 
 namespace trapdem {
 

@@ -7,9 +7,9 @@
 
 #include "analysis/delaunay.hpp"
 #include "analysis/grid_interpolation.hpp"
-#include "analysis/length_text.hpp"
+#include "core/length_text.hpp"
 #include "analysis/triangle_filter.hpp"
-#include "dem/errors.hpp"
+#include "core/errors.hpp"
 #include "io/hdf5_file.hpp"
 
 namespace trapdem {

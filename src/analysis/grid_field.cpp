@@ -3,7 +3,7 @@
 #include <algorithm>
 #include <cmath>
 
-#include "dem/errors.hpp"
+#include "core/errors.hpp"
 
 namespace trapdem {
 

@@ -6,7 +6,7 @@
 #include <limits>
 #include <string>
 
-#include "dem/errors.hpp"
+#include "core/errors.hpp"
 
 namespace trapdem {
 

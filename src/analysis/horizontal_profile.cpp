@@ -5,7 +5,7 @@
 #include <limits>
 #include <string>
 
-#include "dem/errors.hpp"
+#include "core/errors.hpp"
 
 namespace trapdem {
 

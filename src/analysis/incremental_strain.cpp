@@ -3,7 +3,7 @@
 #include <string>
 
 #include "analysis/total_strain.hpp"
-#include "dem/errors.hpp"
+#include "core/errors.hpp"
 
 namespace trapdem {
 

@@ -4,7 +4,7 @@
 #include <cmath>
 #include <limits>
 
-#include "dem/errors.hpp"
+#include "core/errors.hpp"
 
 namespace trapdem {
 

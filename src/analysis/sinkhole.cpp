@@ -2,19 +2,13 @@
 
 #include <cmath>
 #include <fmt/format.h>
-#include <fstream>
 #include <limits>
 #include <numbers>
-#include <sstream>
 
-#include "analysis/length_text.hpp"
-#include "dem/errors.hpp"
-#include "io/config.hpp"
-#include "io/text_file.hpp"
+#include "core/length_text.hpp"
+#include "core/errors.hpp"
 
 namespace trapdem {
-
-namespace fs = std::filesystem;
 
 namespace {
 
@@ -53,7 +47,6 @@ void check_layer(const BlanketLayer& l, std::string_view what) {
                                  "(0 = a vertical-sided collapse; 90 would be horizontal)",
                                  what, l.angle_of_draw_deg));
 }
-
 
 }  // namespace
 
@@ -144,59 +137,6 @@ double implied_angle_of_draw_deg(double surface_diameter, double throat, double 
   return std::atan((surface_diameter - throat) / (2.0 * thickness)) / kDegree;
 }
 
-DemRunGeometry read_dem_run(const fs::path& dir) {
-  const fs::path resolved = dir / "resolved.toml";
-  const fs::path metrics_file = dir / "analysis" / "metrics.json";
-  if (!fs::is_directory(dir)) throw InputError(fmt::format("--from {}: not a folder", dir.string()));
-  if (!fs::exists(resolved))
-    throw InputError(fmt::format("{}: not found; --from needs a trapdem run folder (its resolved.toml has "
-                                 "spin_up.g_level, the trapdoor width and the fill height)",
-                                 resolved.string()));
-  if (!fs::exists(metrics_file))
-    throw InputError(fmt::format("{}: not found; run `trapdem analyze {}` first (it writes the zone of influence "
-                                 "at the surface and the band angles)",
-                                 metrics_file.string(), dir.string()));
-
-  DemRunGeometry g;
-  Config config = Config::load_file(resolved.string());
-  g.name = config.get_string("name", dir.filename().string());
-  g.g_level = config.get_double("spin_up.g_level", 1.0, "g", Range::at_least(1.0));
-  g.fill_height = config.get_double("pluviation.fill_height", 0.0, "m", Range::non_negative());
-
-  const Json m = Json::parse(read_text_file(metrics_file), metrics_file.string());
-
-  // The trapdoor width the analysis used (metrics), else the configuration's.
-  g.trapdoor_width = json_number_or_nan(json_member_or_null(m, "trapdoor"), "width_m");
-  if (!(g.trapdoor_width > 0.0)) g.trapdoor_width = config.require_double("trapdoor.width", "m", Range::positive());
-  g.travel = json_number_or_nan(json_member_or_null(m, "trapdoor"), "travel_m");
-
-  const Json& zone = json_member_or_null(m, "zone_of_influence");
-  g.surface_zone_width = json_number_or_nan(zone, "surface_width_m");
-  g.settlement_fraction = json_number_or_nan(zone, "settlement_fraction");
-  if (!(g.surface_zone_width > 0.0))
-    throw InputError(fmt::format("{}: no zone_of_influence.surface_width_m (the analysis found no settlement "
-                                 "zone at the surface); run `trapdem analyze {}` again at a larger trapdoor "
-                                 "displacement",
-                                 metrics_file.string(), dir.string()));
-  const double measured = json_number_or_nan(zone, "surface_height_m");
-  if (measured > 0.0) {
-    g.soil_height = measured;
-    g.soil_height_source = "the measured surface, metrics.json zone_of_influence.surface_height_m";
-  } else if (g.fill_height > 0.0) {
-    g.soil_height = g.fill_height;
-    g.soil_height_source = "the nominal fill, resolved.toml pluviation.fill_height";
-  } else {
-    throw InputError(fmt::format("{}: no surface height in metrics.json and no pluviation.fill_height in "
-                                 "resolved.toml: the soil height is unknown",
-                                 dir.string()));
-  }
-
-  const Json& bands = json_member_or_null(m, "shear_bands");
-  g.band_left_deg = json_number_or_nan(json_member_or_null(bands, "left"), "angle_deg");
-  g.band_right_deg = json_number_or_nan(json_member_or_null(bands, "right"), "angle_deg");
-  return g;
-}
-
 MechanismComparison compare_with_dem(const DemRunGeometry& run, double assumed_angle_deg) {
   MechanismComparison c;
   c.run = run;
@@ -215,60 +155,6 @@ MechanismComparison compare_with_dem(const DemRunGeometry& run, double assumed_a
   c.supposition = scenario_supposition(c.throat, {BlanketLayer{c.thickness, assumed_angle_deg}});
   c.ratio = c.supposition.surface_diameter / c.dem_surface_diameter;
   return c;
-}
-
-Json to_json(const SuppositionEstimate& e) {
-  Json j = Json::object();
-  j.set("method", "scenario supposition (Buttrick & Van Schalkwyk 1995; SANS 1936): D_s = D_throat + 2 sum t_i tan(alpha_i)");
-  j.set("throat_m", e.throat);
-  Json layers = Json::array();
-  for (const auto& c : e.layers) {
-    Json l = Json::object();
-    l.set("thickness_m", c.layer.thickness);
-    l.set("angle_of_draw_deg", c.layer.angle_of_draw_deg);
-    l.set("widening_m", c.widening);
-    l.set("diameter_at_top_m", c.diameter_above);
-    layers.push_back(l);
-  }
-  j.set("layers", layers);
-  j.set("depth_to_throat_m", e.total_thickness);
-  j.set("surface_diameter_m", e.surface_diameter);
-  j.set("size_class", size_class_name(e.size_class));
-  j.set("size_class_range", size_class_range(e.size_class));
-  return j;
-}
-
-Json to_json(const MechanismComparison& c) {
-  Json j = Json::object();
-  Json model = Json::object();
-  model.set("case", c.run.name);
-  model.set("g_level", c.run.g_level);
-  model.set("trapdoor_width_m", c.run.trapdoor_width);
-  model.set("soil_height_m", c.run.soil_height);
-  model.set("soil_height_source", c.run.soil_height_source);
-  model.set("fill_height_m", c.run.fill_height);
-  model.set("trapdoor_travel_m", c.run.travel);
-  model.set("settlement_fraction", c.run.settlement_fraction);
-  model.set("surface_zone_width_m", c.run.surface_zone_width);
-  model.set("band_left_angle_deg", c.run.band_left_deg);
-  model.set("band_right_angle_deg", c.run.band_right_deg);
-  j.set("model", model);
-
-  Json dem = Json::object();
-  dem.set("scaling", "centrifuge similitude: prototype length = model length x g_level");
-  dem.set("throat_m", c.throat);
-  dem.set("thickness_m", c.thickness);
-  dem.set("surface_diameter_m", c.dem_surface_diameter);
-  dem.set("size_class", size_class_name(c.dem_size_class));
-  dem.set("angle_of_draw_from_surface_zone_deg", c.angle_from_surface_deg);
-  dem.set("angle_of_draw_from_bands_deg", c.angle_from_bands_deg);
-  j.set("mechanism", dem);
-
-  Json sup = to_json(c.supposition);
-  sup.set("assumed_angle_of_draw_deg", c.assumed_angle_deg);
-  j.set("supposition", sup);
-  j.set("ratio_supposition_over_mechanism", c.ratio);
-  return j;
 }
 
 }  // namespace trapdem

@@ -12,13 +12,11 @@
 //    scaled to prototype by the run's g level (centrifuge similitude: lengths x N), beside the supposition
 //    estimate for the same geometry and the angle of draw the DEM implies.
 //
-// Plain functions; lengths in metres, angles in degrees. Bad input throws InputError.
-#include <filesystem>
+// Plain functions; lengths in metres, angles in degrees. Bad input throws InputError. Reading a run
+// folder: study/sinkhole_run.hpp; the JSON form: analysis/sinkhole_json.hpp.
 #include <string>
 #include <string_view>
 #include <vector>
-
-#include "analysis/json.hpp"
 
 namespace trapdem {
 
@@ -65,7 +63,8 @@ SuppositionEstimate scenario_supposition(double throat, const std::vector<Blanke
 // thickness H: atan((D - B) / (2 H)) in degrees (negative if D < B).
 double implied_angle_of_draw_deg(double surface_diameter, double throat, double thickness);
 
-// What a DEM run folder says, in model units (read from DIR/resolved.toml and DIR/analysis/metrics.json).
+// What a DEM run says, in model units (study/sinkhole_run.hpp reads it from a run folder's
+// resolved.toml and analysis/metrics.json).
 struct DemRunGeometry {
   std::string name;
   double g_level = 1.0;              // N, spin_up.g_level
@@ -80,10 +79,6 @@ struct DemRunGeometry {
   double band_left_deg = 0.0;        // band angles to the vertical, positive outward (NaN if not found)
   double band_right_deg = 0.0;
 };
-
-// Reads the run folder. Throws InputError if resolved.toml is missing, or if analysis/metrics.json is
-// missing ("run `trapdem analyze DIR` first") or lacks the zone of influence at the surface.
-DemRunGeometry read_dem_run(const std::filesystem::path& dir);
 
 struct MechanismComparison {
   DemRunGeometry run;
@@ -101,8 +96,5 @@ struct MechanismComparison {
 };
 
 MechanismComparison compare_with_dem(const DemRunGeometry& run, double assumed_angle_of_draw_deg);
-
-Json to_json(const SuppositionEstimate& e);
-Json to_json(const MechanismComparison& c);
 
 }  // namespace trapdem

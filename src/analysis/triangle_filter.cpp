@@ -1,6 +1,6 @@
 #include "analysis/triangle_filter.hpp"
 
-#include "dem/errors.hpp"
+#include "core/errors.hpp"
 
 namespace trapdem {
 

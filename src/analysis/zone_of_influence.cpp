@@ -1,7 +1,7 @@
 #include "analysis/zone_of_influence.hpp"
 
 #include "analysis/settlement_profile.hpp"
-#include "dem/errors.hpp"
+#include "core/errors.hpp"
 
 namespace trapdem {
 

@@ -11,7 +11,7 @@
 #include <fmt/format.h>
 
 #include "dem/contact_kernel.hpp"
-#include "dem/errors.hpp"
+#include "core/errors.hpp"
 
 namespace trapdem {
 

@@ -51,10 +51,8 @@ SizeDistribution read_sizes(Config& p) {
   }
 }
 
-}  // namespace
-
-ExperimentConfig ExperimentConfig::from(Config& c) {
-  ExperimentConfig e;
+// The specimen's identity, box and trapdoor (from() and specimen_from() read them alike).
+void read_specimen(Config& c, ExperimentConfig& e) {
   e.name = c.get_string("name", "trapdoor");
   e.description = c.get_string("description", "");
 
@@ -77,6 +75,24 @@ ExperimentConfig ExperimentConfig::from(Config& c) {
   e.trapdoor.cavity_depth = door.get_double("cavity_depth", e.trapdoor.travel + 0.01, "m", Range::positive());
   if (e.trapdoor.cavity_depth < e.trapdoor.travel)
     throw door.error("cavity_depth", fmt::format("at least the travel ({} m)", e.trapdoor.travel));
+}
+
+// pluviation.fill_height: the pour's end, and the soil height the sinkhole estimate falls back on.
+double read_fill_height(Config& pour, const BoxConfig& box) {
+  const double fill_height = pour.get_double("fill_height", 0.0, "m", Range::non_negative());
+  if (fill_height > box.height) throw pour.error("fill_height", fmt::format("at most the box height ({} m)", box.height));
+  return fill_height;
+}
+
+double read_g_level(Config& spin, const SpinUpConfig& defaults) {
+  return spin.get_double("g_level", defaults.g_level, "g", Range::at_least(1.0));
+}
+
+}  // namespace
+
+ExperimentConfig ExperimentConfig::from(Config& c) {
+  ExperimentConfig e;
+  read_specimen(c, e);
 
   Config particles = c.get_table("particles");
   e.material.density = particles.get_double("density", e.material.density, "kg/m^3", Range::positive());
@@ -94,11 +110,9 @@ ExperimentConfig ExperimentConfig::from(Config& c) {
 
   Config pour = c.get_table("pluviation");
   e.pluviation.count = pour.get_int("count", 0, Range::non_negative());
-  e.pluviation.fill_height = pour.get_double("fill_height", 0.0, "m", Range::non_negative());
+  e.pluviation.fill_height = read_fill_height(pour, e.box);
   if (e.pluviation.count == 0 && e.pluviation.fill_height == 0.0)
     throw pour.error("count", "a particle count or a fill_height (m) to end the pour");
-  if (e.pluviation.fill_height > e.box.height)
-    throw pour.error("fill_height", fmt::format("at most the box height ({} m)", e.box.height));
   e.pluviation.drop_height = pour.get_double("drop_height", e.pluviation.drop_height, "m", Range::non_negative());
   e.pluviation.flow_rate = pour.get_double("flow_rate", 0.0, "kg/s", Range::non_negative());
   e.pluviation.packing_fraction =
@@ -124,7 +138,7 @@ ExperimentConfig ExperimentConfig::from(Config& c) {
     throw settle.error("min_time", fmt::format("at most max_time ({} s)", e.settling.max_time));
 
   Config spin = c.get_table("spin_up");
-  e.spin_up.g_level = spin.get_double("g_level", e.spin_up.g_level, "g", Range::at_least(1.0));
+  e.spin_up.g_level = read_g_level(spin, e.spin_up);
   e.spin_up.ramp_time = spin.get_double("ramp_time", e.spin_up.ramp_time, "s", Range::non_negative());
 
   Config num = c.get_table("numerics");
@@ -155,6 +169,16 @@ ExperimentConfig ExperimentConfig::from(Config& c) {
   c.add_derived("derived.skin", e.skin(), "m");
   c.add_derived("derived.expected_particle_count", e.expected_particle_count());
   c.add_derived("derived.mean_diameter", e.material.sizes.mean_diameter(), "m");
+  return e;
+}
+
+ExperimentConfig ExperimentConfig::specimen_from(Config& c) {
+  ExperimentConfig e;
+  read_specimen(c, e);
+  Config pour = c.get_table("pluviation");
+  e.pluviation.fill_height = read_fill_height(pour, e.box);
+  Config spin = c.get_table("spin_up");
+  e.spin_up.g_level = read_g_level(spin, e.spin_up);
   return e;
 }
 

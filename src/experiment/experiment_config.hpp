@@ -89,6 +89,13 @@ struct ExperimentConfig {
   // adds the derived values (time step, particle count, critical step) to the resolved record.
   static ExperimentConfig from(Config& config);
 
+  // The specimen alone: name, description, box, trapdoor, pluviation.fill_height and
+  // spin_up.g_level, read with the same keys, defaults and rules as from(); other keys are left
+  // unread and not reported, other members keep their defaults. What the analyses of a run folder
+  // need from its resolved.toml (RunFolder), and what a short file describing a run made with
+  // another code gives them (--config FILE with [box] and [trapdoor]).
+  static ExperimentConfig specimen_from(Config& config);
+
   double critical_time_step() const;  // s, sqrt(m_min / k_max)
   double time_step() const;           // s
   double skin() const;                // m

@@ -4,7 +4,7 @@
 
 #include <fmt/format.h>
 
-#include "dem/errors.hpp"
+#include "core/errors.hpp"
 
 namespace trapdem {
 

@@ -6,7 +6,7 @@
 #include <functional>
 #include <string_view>
 
-#include "io/file_error.hpp"
+#include "core/errors.hpp"
 
 namespace trapdem {
 

@@ -2,7 +2,7 @@
 
 #include <fmt/format.h>
 
-#include "dem/errors.hpp"
+#include "core/errors.hpp"
 #include "io/atomic_file.hpp"
 #include "io/hdf5_file.hpp"
 

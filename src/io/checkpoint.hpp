@@ -10,7 +10,7 @@
 #include <vector>
 
 #include "dem/simulation.hpp"
-#include "io/file_error.hpp"
+#include "core/errors.hpp"
 
 namespace trapdem {
 

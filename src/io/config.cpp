@@ -13,6 +13,7 @@
 #include <fmt/format.h>
 #include <toml++/toml.h>
 
+#include "core/text_escape.hpp"
 #include "io/text.hpp"
 
 namespace trapdem {

@@ -14,7 +14,7 @@
 #include <string_view>
 #include <vector>
 
-#include "dem/errors.hpp"
+#include "core/errors.hpp"
 
 namespace trapdem {
 

@@ -14,7 +14,7 @@
 
 #include "dem/particles.hpp"
 #include "dem/vec3.hpp"
-#include "io/file_error.hpp"
+#include "core/errors.hpp"
 
 namespace trapdem {
 

@@ -13,7 +13,7 @@
 #include <fmt/format.h>
 #include <fmt/ostream.h>
 
-#include "dem/errors.hpp"
+#include "core/errors.hpp"
 #include "io/text.hpp"
 
 namespace trapdem {

@@ -2,6 +2,7 @@
 
 #include <fmt/format.h>
 
+#include "core/text_escape.hpp"
 #include "io/atomic_file.hpp"
 #include "io/hdf5_file.hpp"
 
@@ -16,21 +17,6 @@ constexpr std::int64_t kVersion = 1;
 constexpr const char* kRoot = "snapshots";
 
 std::string group_name(std::size_t index) { return fmt::format("{:06d}", index); }
-
-std::string xml_escape(const std::string& text) {
-  std::string out;
-  for (char c : text) {
-    switch (c) {
-      case '&': out += "&amp;"; break;
-      case '<': out += "&lt;"; break;
-      case '>': out += "&gt;"; break;
-      case '"': out += "&quot;"; break;
-      case '\'': out += "&apos;"; break;
-      default: out += c;
-    }
-  }
-  return out;
-}
 
 double attribute_or(const Hdf5Group& g, const char* name, double fallback) {
   return g.has_attribute(name) ? g.double_attribute(name) : fallback;
@@ -146,7 +132,7 @@ std::vector<Snapshot> read_snapshots(const fs::path& h5_path) {
 }
 
 std::string snapshot_xdmf(const std::string& h5_file_name, const std::vector<SnapshotInfo>& snapshots) {
-  const std::string file = xml_escape(h5_file_name);
+  const std::string file = markup_escape(h5_file_name);
   std::string x;
   x += "<?xml version=\"1.0\" ?>\n";
   x += "<!-- trapdem particle snapshots; the data live in " + file + " (see docs/output.md) -->\n";
@@ -168,7 +154,7 @@ std::string snapshot_xdmf(const std::string& h5_file_name, const std::vector<Sna
     };
     x += fmt::format("      <Grid Name=\"{}\" GridType=\"Uniform\">\n", s.name);
     x += fmt::format("        <Time Value=\"{}\"/>\n", s.time);
-    x += fmt::format("        <Information Name=\"stage\" Value=\"{}\"/>\n", xml_escape(s.stage));
+    x += fmt::format("        <Information Name=\"stage\" Value=\"{}\"/>\n", markup_escape(s.stage));
     x += fmt::format("        <Information Name=\"trapdoor_displacement\" Value=\"{}\"/>\n", s.trapdoor_displacement);
     x += fmt::format("        <Information Name=\"step\" Value=\"{}\"/>\n", s.step);
     x += fmt::format("        <Topology TopologyType=\"Polyvertex\" NumberOfElements=\"{}\" NodesPerElement=\"1\"/>\n", n);

@@ -1,7 +1,5 @@
 #include "io/text.hpp"
 
-#include <fmt/format.h>
-
 namespace trapdem {
 
 std::vector<std::string_view> split_words(std::string_view line) {
@@ -16,26 +14,6 @@ std::vector<std::string_view> split_words(std::string_view line) {
     i = j;
   }
   return words;
-}
-
-std::string quoted(std::string_view text) {
-  std::string out = "\"";
-  for (char c : text) {
-    switch (c) {
-      case '"': out += "\\\""; break;
-      case '\\': out += "\\\\"; break;
-      case '\n': out += "\\n"; break;
-      case '\t': out += "\\t"; break;
-      case '\r': out += "\\r"; break;
-      case '\b': out += "\\b"; break;
-      case '\f': out += "\\f"; break;
-      default:
-        if (static_cast<unsigned char>(c) < 0x20) out += fmt::format("\\u{:04X}", int(c));
-        else out += c;
-    }
-  }
-  out += '"';
-  return out;
 }
 
 }  // namespace trapdem

@@ -5,7 +5,7 @@
 #include <fstream>
 #include <sstream>
 
-#include "io/file_error.hpp"
+#include "core/errors.hpp"
 
 namespace trapdem {
 

@@ -5,7 +5,7 @@
 #include <numeric>
 #include <unordered_map>
 
-#include "dem/errors.hpp"
+#include "core/errors.hpp"
 
 namespace trapdem {
 

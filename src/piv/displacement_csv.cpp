@@ -4,7 +4,7 @@
 #include <cstdio>
 #include <fstream>
 
-#include "dem/errors.hpp"
+#include "core/errors.hpp"
 
 namespace trapdem {
 

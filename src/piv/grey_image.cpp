@@ -5,7 +5,7 @@
 #include <opencv2/imgcodecs.hpp>
 #include <opencv2/imgproc.hpp>
 
-#include "dem/errors.hpp"
+#include "core/errors.hpp"
 
 namespace trapdem {
 

@@ -9,7 +9,7 @@
 #include <opencv2/imgproc.hpp>
 
 #include "analysis/grid_interpolation.hpp"
-#include "dem/errors.hpp"
+#include "core/errors.hpp"
 #include "io/atomic_file.hpp"
 #include "io/hdf5_file.hpp"
 #include "plot/axes.hpp"

@@ -7,7 +7,7 @@
 #include "analysis/incremental_strain.hpp"
 #include "analysis/total_strain.hpp"
 #include "analysis/triangle_filter.hpp"
-#include "dem/errors.hpp"
+#include "core/errors.hpp"
 
 namespace trapdem {
 

@@ -6,7 +6,7 @@
 
 #include <opencv2/calib3d.hpp>
 
-#include "dem/errors.hpp"
+#include "core/errors.hpp"
 
 namespace trapdem {
 

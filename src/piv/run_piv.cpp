@@ -6,7 +6,7 @@
 #include <optional>
 #include <sstream>
 
-#include "dem/errors.hpp"
+#include "core/errors.hpp"
 #include "piv/image_pair.hpp"
 #include "piv/prepared_image.hpp"
 

@@ -5,7 +5,7 @@
 #include <numbers>
 #include <random>
 
-#include "dem/errors.hpp"
+#include "core/errors.hpp"
 
 namespace trapdem {
 

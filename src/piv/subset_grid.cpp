@@ -2,7 +2,7 @@
 
 #include <string>
 
-#include "dem/errors.hpp"
+#include "core/errors.hpp"
 
 namespace trapdem {
 

@@ -4,7 +4,7 @@
 #include <cmath>
 #include <fmt/format.h>
 
-#include "analysis/length_text.hpp"
+#include "core/length_text.hpp"
 #include "plot/canvas.hpp"
 #include "plot/colour_bar.hpp"
 #include "plot/colour_map.hpp"

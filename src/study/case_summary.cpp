@@ -2,7 +2,8 @@
 
 #include <cmath>
 
-#include "dem/errors.hpp"
+#include "core/errors.hpp"
+#include "experiment/run_folder.hpp"
 #include "io/text_file.hpp"
 
 namespace trapdem {
@@ -59,7 +60,7 @@ void read_ground_reaction(const std::vector<GroundReactionRow>& rows, double tra
 
 CaseCost read_case_cost(const std::filesystem::path& run_dir) {
   CaseCost cost;
-  const std::filesystem::path file = run_dir / "run.json";
+  const std::filesystem::path file = RunFolder(run_dir).run_json();
   if (!std::filesystem::exists(file)) return cost;
   const Json j = Json::parse(read_text_file(file), file.string());
   cost.wall_seconds = json_number_or_nan(j, "wall_seconds");

@@ -7,7 +7,7 @@
 #include <string>
 #include <vector>
 
-#include "analysis/json.hpp"
+#include "core/json.hpp"
 #include "analysis/sinkhole.hpp"
 #include "experiment/ground_reaction.hpp"
 

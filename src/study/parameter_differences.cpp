@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <map>
 
+#include "experiment/run_folder.hpp"
 #include "io/config.hpp"
 #include "study/study_definition.hpp"
 
@@ -36,7 +37,7 @@ std::vector<ParameterDifference> differing_parameters(
 }
 
 std::vector<std::pair<std::string, std::string>> resolved_parameters(const std::filesystem::path& run_dir) {
-  Config resolved = Config::load_file((run_dir / "resolved.toml").string());
+  Config resolved = Config::load_file(RunFolder(run_dir).resolved_toml().string());
   return flatten_values(resolved, "");
 }
 

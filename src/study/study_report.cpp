@@ -4,9 +4,10 @@
 
 #include <fmt/format.h>
 
-#include "analysis/length_text.hpp"
+#include "core/length_text.hpp"
 #include "io/atomic_file.hpp"
-#include "io/file_error.hpp"
+#include "core/errors.hpp"
+#include "core/text_escape.hpp"
 #include "plot/colour_map.hpp"
 #include "plot/line_chart.hpp"
 #include "plot/specimen_figures.hpp"
@@ -93,22 +94,6 @@ ul.findings li { margin-bottom: 0.4em; }
 
 }  // namespace
 
-std::string html_escape(const std::string& text) {
-  std::string out;
-  out.reserve(text.size());
-  for (char ch : text) {
-    switch (ch) {
-      case '&': out += "&amp;"; break;
-      case '<': out += "&lt;"; break;
-      case '>': out += "&gt;"; break;
-      case '"': out += "&quot;"; break;
-      case '\'': out += "&#39;"; break;
-      default: out += ch;
-    }
-  }
-  return out;
-}
-
 fs::path write_study_report(const fs::path& dir, const StudyReportInput& in) {
   std::error_code ec;
   fs::create_directories(dir, ec);
@@ -153,15 +138,15 @@ fs::path write_study_report(const fs::path& dir, const StudyReportInput& in) {
   std::string h;
   h += "<!DOCTYPE html>\n<html lang=\"en\">\n<head>\n<meta charset=\"utf-8\">\n";
   h += "<meta name=\"viewport\" content=\"width=device-width, initial-scale=1\">\n";
-  h += fmt::format("<title>{} — trapdem study report</title>\n", html_escape(in.study_name));
+  h += fmt::format("<title>{} — trapdem study report</title>\n", markup_escape(in.study_name));
   h += "<link rel=\"icon\" href=\"data:,\">\n";  // no favicon request: the page stays offline and error-free
   h += fmt::format("<style>{}</style>\n</head>\n<body>\n<main>\n", kStyle);
   h += fmt::format("<h1>Study {}</h1>\n<p class=\"lead\">{}<br>Scale <b>{}</b>{}; {} cases.</p>\n",
-                   html_escape(in.study_name), html_escape(in.description), html_escape(in.scale),
-                   in.scale_description.empty() ? "" : ": " + html_escape(in.scale_description), in.cases.size());
+                   markup_escape(in.study_name), markup_escape(in.description), markup_escape(in.scale),
+                   in.scale_description.empty() ? "" : ": " + markup_escape(in.scale_description), in.cases.size());
 
   h += "<h2>Findings</h2>\n<ul class=\"findings\">\n";
-  for (const std::string& f : findings) h += "<li>" + html_escape(f) + "</li>\n";
+  for (const std::string& f : findings) h += "<li>" + markup_escape(f) + "</li>\n";
   h += "</ul>\n<p class=\"lead\">Computed from the metrics below, in the order the study lists its cases; changes "
        "within a quantity's resolution count as none (docs/study.md).</p>\n";
 
@@ -175,13 +160,13 @@ fs::path write_study_report(const fs::path& dir, const StudyReportInput& in) {
     h += "<p class=\"note\">No case could be analysed.</p>\n";
   }
 
-  h += fmt::format("<h2>Vertical displacement at δ = {}</h2>\n<div class=\"grid\">\n", html_escape(contours_at));
+  h += fmt::format("<h2>Vertical displacement at δ = {}</h2>\n<div class=\"grid\">\n", markup_escape(contours_at));
   for (const StudyCaseResult& c : in.cases) {
     if (c.contour_analysis) {
       h += fmt::format("<figure><img src=\"{}\" alt=\"Vertical displacement contours of {}\"><figcaption>{}</figcaption>"
-                       "</figure>\n", html_escape(contour_file(c)), html_escape(c.summary.label), html_escape(c.summary.label));
+                       "</figure>\n", markup_escape(contour_file(c)), markup_escape(c.summary.label), markup_escape(c.summary.label));
     } else {
-      h += fmt::format("<p class=\"note\">{}: {}</p>\n", html_escape(c.summary.label), html_escape(c.missing_note));
+      h += fmt::format("<p class=\"note\">{}: {}</p>\n", markup_escape(c.summary.label), markup_escape(c.missing_note));
     }
   }
   h += "</div>\n";
@@ -199,10 +184,10 @@ fs::path write_study_report(const fs::path& dir, const StudyReportInput& in) {
     const double b = s.trapdoor_width;
     h += fmt::format("<tr><td class=\"l\">{}</td><td>{}</td><td>{} ({} / {})</td><td>{}</td><td>{}</td><td>{}</td>"
                      "<td>{}</td><td class=\"l\">{}</td><td>{}</td><td>{}</td><td>{}</td></tr>\n",
-                     html_escape(s.label), cell(s.travel / b, "{:.2f}"), cell(s.band_angle_deg, "{:.1f}"),
+                     markup_escape(s.label), cell(s.travel / b, "{:.2f}"), cell(s.band_angle_deg, "{:.1f}"),
                      cell(s.band_angle_left_deg, "{:.1f}"), cell(s.band_angle_right_deg, "{:.1f}"),
                      cell(s.band_height / b, "{:.2f}"), cell(s.band_width_d, "{:.1f}"), cell(s.zone_surface / b, "{:.2f}"),
-                     cell(s.shape_ratio, "{:.2f}"), html_escape(s.shape),
+                     cell(s.shape_ratio, "{:.2f}"), markup_escape(s.shape),
                      cell(s.min_load_ratio, "{:.3f}"), cell(s.min_load_at_over_b, "{:.3f}"),
                      cell(s.final_load_ratio, "{:.3f}"));
   }
@@ -215,9 +200,9 @@ fs::path write_study_report(const fs::path& dir, const StudyReportInput& in) {
                    "</th><th>angle of draw the DEM implies (°)</th></tr>\n", in.settings.angle_of_draw_deg);
   for (const CaseSummary& s : summaries) {
     h += fmt::format("<tr><td class=\"l\">{}</td><td>{}</td><td class=\"l\">{}</td><td>{}</td><td class=\"l\">{}</td>"
-                     "<td>{}</td></tr>\n", html_escape(s.label), cell(s.dem_surface_diameter, "{:.1f}"),
-                     html_escape(s.dem_size_class), cell(s.supposition_surface_diameter, "{:.1f}"),
-                     html_escape(s.supposition_size_class), cell(s.angle_from_surface_deg, "{:.1f}"));
+                     "<td>{}</td></tr>\n", markup_escape(s.label), cell(s.dem_surface_diameter, "{:.1f}"),
+                     markup_escape(s.dem_size_class), cell(s.supposition_surface_diameter, "{:.1f}"),
+                     markup_escape(s.supposition_size_class), cell(s.angle_from_surface_deg, "{:.1f}"));
   }
   h += "</table></div>\n<p class=\"lead\">Model lengths times the g level (centrifuge similitude); the supposition "
        "(Buttrick &amp; Van Schalkwyk 1995, SANS 1936) for the same throat and soil thickness, one layer. "
@@ -228,11 +213,11 @@ fs::path write_study_report(const fs::path& dir, const StudyReportInput& in) {
     h += "<p>The cases' resolved configurations are identical apart from their names.</p>\n";
   } else {
     h += "<div class=\"scroll\"><table>\n<tr><th class=\"l\">key</th>";
-    for (const CaseSummary& s : summaries) h += "<th>" + html_escape(s.label) + "</th>";
+    for (const CaseSummary& s : summaries) h += "<th>" + markup_escape(s.label) + "</th>";
     h += "</tr>\n";
     for (const ParameterDifference& d : differences) {
-      h += "<tr><td class=\"l\"><code>" + html_escape(d.key) + "</code></td>";
-      for (const std::string& v : d.values) h += "<td>" + html_escape(v) + "</td>";
+      h += "<tr><td class=\"l\"><code>" + markup_escape(d.key) + "</code></td>";
+      for (const std::string& v : d.values) h += "<td>" + markup_escape(v) + "</td>";
       h += "</tr>\n";
     }
     h += "</table></div>\n";
@@ -243,9 +228,9 @@ fs::path write_study_report(const fs::path& dir, const StudyReportInput& in) {
   for (const StudyCaseResult& c : in.cases) {
     const CaseCost& k = c.summary.cost;
     h += fmt::format("<tr><td class=\"l\">{}</td><td>{}</td><td>{}</td><td>{}</td><td>{}</td><td class=\"l\"><code>{}"
-                     "</code></td></tr>\n", html_escape(c.summary.label), cell(k.particles, "{:.0f}"),
+                     "</code></td></tr>\n", markup_escape(c.summary.label), cell(k.particles, "{:.0f}"),
                      duration(k.wall_seconds), cell(k.particle_steps_per_second / 1e6, "{:.2f}"),
-                     cell(k.segments, "{:.0f}"), html_escape(c.run_dir.string()));
+                     cell(k.segments, "{:.0f}"), markup_escape(c.run_dir.string()));
   }
   h += "</table></div>\n<p class=\"lead\">Run time: wall clock summed over the segments that ended (a first run and "
        "each resume); work lost to a killed segment is not counted.</p>\n";

@@ -35,7 +35,4 @@ struct StudyReportInput {
 // before the page that shows them. Returns the page's path.
 std::filesystem::path write_study_report(const std::filesystem::path& report_dir, const StudyReportInput& input);
 
-// Text for HTML element content and attribute values (& < > " ').
-std::string html_escape(const std::string& text);
-
 }  // namespace trapdem

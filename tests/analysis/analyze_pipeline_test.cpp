@@ -9,10 +9,9 @@
 #include <sstream>
 
 #include "analysis/analysis_output.hpp"
-#include "analysis/json.hpp"
-#include "analysis/length_text.hpp"
+#include "core/json.hpp"
 #include "analyze_command.hpp"
-#include "dem/errors.hpp"
+#include "core/errors.hpp"
 #include "synthetic_run.hpp"
 
 using namespace trapdem;
@@ -41,7 +40,7 @@ TEST(AnalyzePipeline, UniformVerticalStrainGivesThatStrainEverywhere) {
   const double eps = 0.01;
   const auto run = test::make_synthetic_run(scratch("uniform"), {0.0, 0.0005, 0.001},
                                             [&](Point2 p, double delta) { return Point2{0.0, -eps * p.z * delta / 0.001}; });
-  app::AnalyzeOptions o;
+  AnalyzeOptions o;
   o.dir = run.dir.string();
   o.at = "1mm";
   o.incremental = true;
@@ -87,7 +86,7 @@ TEST(AnalyzePipeline, TwoPlanarBandsGiveTheirAngleAndWidth) {
     return Point2{0.0, -delta * standard_normal_cdf(n_left / sigma) * standard_normal_cdf(n_right / sigma)};
   };
   const auto run = test::make_synthetic_run(scratch("bands"), {0.0, 0.005, 0.01}, field);
-  app::AnalyzeOptions o;
+  AnalyzeOptions o;
   o.dir = run.dir.string();
   o.at = "10 mm";
   o.reference = "0";
@@ -113,7 +112,7 @@ TEST(AnalyzePipeline, TwoPlanarBandsGiveTheirAngleAndWidth) {
 TEST(AnalyzePipeline, MissingDisplacementNamesTheAvailableOnes) {
   const auto run = test::make_synthetic_run(scratch("missing"), {0.0, 0.001},
                                             [](Point2, double delta) { return Point2{0.0, -delta}; }, 0.02);
-  app::AnalyzeOptions o;
+  AnalyzeOptions o;
   o.dir = run.dir.string();
   o.at = "80mm";
   o.quiet = true;
@@ -130,31 +129,4 @@ TEST(AnalyzePipeline, MissingDisplacementNamesTheAvailableOnes) {
   o.view = "front";
   o.grid = "-2mm";
   EXPECT_THROW(app::run_analyze(o), InputError);
-}
-
-TEST(LengthText, ParsesUnitsAndRejectsNonsense) {
-  EXPECT_DOUBLE_EQ(parse_length("80mm", "--at"), 0.08);
-  EXPECT_DOUBLE_EQ(parse_length("10 mm", "--at"), 0.01);
-  EXPECT_DOUBLE_EQ(parse_length("0.08", "--at"), 0.08);
-  EXPECT_DOUBLE_EQ(parse_length("8cm", "--at"), 0.08);
-  EXPECT_DOUBLE_EQ(parse_length(" 1e-3 m ", "--at"), 0.001);
-  EXPECT_THROW(parse_length("80 furlongs", "--at"), InputError);
-  EXPECT_THROW(parse_length("mm", "--at"), InputError);
-  EXPECT_THROW(parse_length("", "--at"), InputError);
-  EXPECT_EQ(app::parse_length_list("0mm, 10 mm,0.02", "--displacements"), (std::vector<double>{0.0, 0.01, 0.02}));
-}
-
-TEST(Json, RoundTripsMetricsWithNullForNaN) {
-  Json j = Json::object();
-  j.set("a", 1.5);
-  j.set("nan", std::nan(""));
-  Json arr = Json::array();
-  arr.push_back(1);
-  arr.push_back("x\"y");
-  j.set("list", arr);
-  const Json back = Json::parse(j.dump());
-  EXPECT_DOUBLE_EQ(back["a"].as_number(), 1.5);
-  EXPECT_TRUE(back["nan"].is_null());
-  EXPECT_EQ(back["list"][1].as_string(), "x\"y");
-  EXPECT_THROW(Json::parse("{\"a\": }"), InputError);
 }

@@ -9,7 +9,7 @@
 
 #include "analysis/dem_piv_comparison.hpp"
 #include "compare_command.hpp"
-#include "dem/errors.hpp"
+#include "core/errors.hpp"
 #include "piv/piv_output.hpp"
 #include "synthetic_run.hpp"
 
@@ -139,11 +139,11 @@ CompareCase make_case(const std::string& name, double offset_m) {
 
 TEST(DemPivComparison, SameFieldGivesZeroAndAnOffsetFieldItsKnownRmsThroughTheCommand) {
   const CompareCase same = make_case("trapdem_cmp_same", 0.0);
-  app::CompareOptions o;
+  CompareOptions o;
   o.dem_dir = same.run.string();
   o.piv_dir = same.piv.string();
   o.at = "10mm";
-  const app::CompareResult c = app::compare_directories(o);
+  const CompareResult c = compare_directories(o);
   EXPECT_EQ(c.piv_image, 3u);
   EXPECT_EQ(c.piv_reference_image, 1u);
   EXPECT_NEAR(c.trapdoor_travel(), 0.01, 1e-9);
@@ -155,7 +155,7 @@ TEST(DemPivComparison, SameFieldGivesZeroAndAnOffsetFieldItsKnownRmsThroughTheCo
   o.dem_dir = off.run.string();
   o.piv_dir = off.piv.string();
   o.out = (off.run / "compare.png").string();
-  const app::CompareResult d = app::compare_directories(o);
+  const CompareResult d = compare_directories(o);
   EXPECT_NEAR(d.error.rms_normalised(), 0.02, 1e-6);
   EXPECT_NEAR(d.error.bias_normalised(), -0.02, 1e-6);
   EXPECT_EQ(app::run_compare(o), 0);
@@ -163,18 +163,18 @@ TEST(DemPivComparison, SameFieldGivesZeroAndAnOffsetFieldItsKnownRmsThroughTheCo
 
   // --image picks another image: 5 mm of PIV against 10 mm of DEM is far off.
   o.image = 2;
-  EXPECT_GT(app::compare_directories(o).error.rms_normalised(), 0.2);
+  EXPECT_GT(compare_directories(o).error.rms_normalised(), 0.2);
   o.image = 0;
 
   // Clear errors: unknown displacement, missing PIV, no overlap.
   o.at = "7mm";
-  EXPECT_THROW(app::compare_directories(o), InputError);
+  EXPECT_THROW(compare_directories(o), InputError);
   o.at = "10mm";
   o.piv_trapdoor = "900mm,0mm";
-  EXPECT_THROW(app::compare_directories(o), InputError);
+  EXPECT_THROW(compare_directories(o), InputError);
   o.piv_trapdoor.clear();
   o.piv_dir = (off.run / "nothing").string();
-  EXPECT_THROW(app::compare_directories(o), InputError);
+  EXPECT_THROW(compare_directories(o), InputError);
   fs::remove_all(same.run.parent_path());
   fs::remove_all(off.run.parent_path());
 }

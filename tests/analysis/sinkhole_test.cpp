@@ -9,9 +9,10 @@
 
 #include <gtest/gtest.h>
 
-#include "analysis/json.hpp"
+#include "core/json.hpp"
 #include "analysis/sinkhole.hpp"
-#include "dem/errors.hpp"
+#include "study/sinkhole_run.hpp"
+#include "core/errors.hpp"
 #include "sinkhole_command.hpp"
 
 namespace fs = std::filesystem;

@@ -4,7 +4,7 @@
 
 #include <string>
 
-#include "dem/errors.hpp"
+#include "core/errors.hpp"
 #include "dem/simulation.hpp"
 #include "test_support.hpp"
 

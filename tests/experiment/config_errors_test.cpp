@@ -12,7 +12,7 @@
 #include <fmt/format.h>
 #include <gtest/gtest.h>
 
-#include "dem/errors.hpp"
+#include "core/errors.hpp"
 #include "experiment/experiment_config.hpp"
 #include "io/config.hpp"
 

@@ -8,7 +8,7 @@
 #include <fstream>
 #include <sstream>
 
-#include "dem/errors.hpp"
+#include "core/errors.hpp"
 #include "experiment/strongbox.hpp"
 #include "experiment/trapdoor_experiment.hpp"
 #include "io/checkpoint.hpp"

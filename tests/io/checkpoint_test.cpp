@@ -7,7 +7,7 @@
 
 #include <cmath>
 
-#include "dem/errors.hpp"
+#include "core/errors.hpp"
 #include "io_test_support.hpp"
 
 using namespace trapdem;

@@ -8,7 +8,7 @@
 #include <sstream>
 #include <string>
 
-#include "dem/errors.hpp"
+#include "core/errors.hpp"
 
 using namespace trapdem;
 

@@ -9,7 +9,7 @@
 #include <opencv2/imgcodecs.hpp>
 #include <opencv2/imgproc.hpp>
 
-#include "dem/errors.hpp"
+#include "core/errors.hpp"
 #include "piv_test_support.hpp"
 #include "piv/run_piv.hpp"
 #include "piv/speckle_synthesis.hpp"

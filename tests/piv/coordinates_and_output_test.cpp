@@ -5,7 +5,7 @@
 #include <sstream>
 #include <string>
 
-#include "dem/errors.hpp"
+#include "core/errors.hpp"
 #include "piv/displacement_csv.hpp"
 #include "piv/pixel_to_model.hpp"
 #include "piv/run_piv.hpp"

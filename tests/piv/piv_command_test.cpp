@@ -19,7 +19,7 @@
 #include <opencv2/imgcodecs.hpp>
 #include <opencv2/imgproc.hpp>
 
-#include "dem/errors.hpp"
+#include "core/errors.hpp"
 #include "piv_test_support.hpp"
 #include "io/hdf5_file.hpp"
 #include "piv_command.hpp"

@@ -9,7 +9,7 @@
 
 #include <gtest/gtest.h>
 
-#include "dem/errors.hpp"
+#include "core/errors.hpp"
 #include "piv/displacement_fields.hpp"
 #include "piv/piv_result.hpp"
 

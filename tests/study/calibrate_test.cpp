@@ -9,8 +9,8 @@
 
 #include <fmt/format.h>
 
-#include "calibrate_command.hpp"
-#include "dem/errors.hpp"
+#include "study/calibration.hpp"
+#include "core/errors.hpp"
 #include "experiment/experiment_config.hpp"
 #include "io/config.hpp"
 #include "io/text_file.hpp"
@@ -49,13 +49,13 @@ double scale_value(const std::string& scale_txt, const std::string& key) {
 }  // namespace
 
 TEST(Calibrate, VaryParsesKeysAndValuesAndRefusesMistakes) {
-  const app::VariedKey v = app::parse_vary("contact.rolling_friction = 0.1, 0.2 ,0.4");
+  const VariedKey v = parse_vary("contact.rolling_friction = 0.1, 0.2 ,0.4");
   EXPECT_EQ(v.key, "contact.rolling_friction");
   EXPECT_EQ(v.values, (std::vector<std::string>{"0.1", "0.2", "0.4"}));
-  EXPECT_THROW(app::parse_vary("contact.rolling_friction"), InputError);
-  EXPECT_THROW(app::parse_vary("=0.1"), InputError);
-  EXPECT_THROW(app::parse_vary("a.b=0.1,,0.2"), InputError);
-  EXPECT_THROW(app::parse_vary("a.b=0.1,0.1"), InputError);
+  EXPECT_THROW(parse_vary("contact.rolling_friction"), InputError);
+  EXPECT_THROW(parse_vary("=0.1"), InputError);
+  EXPECT_THROW(parse_vary("a.b=0.1,,0.2"), InputError);
+  EXPECT_THROW(parse_vary("a.b=0.1,0.1"), InputError);
 }
 
 TEST(Calibrate, PivOfARenderedTinyRunRanksItsOwnParametersFirst) {
@@ -88,7 +88,7 @@ TEST(Calibrate, PivOfARenderedTinyRunRanksItsOwnParametersFirst) {
   piv.quiet = true;
   ASSERT_EQ(app::run_piv_command(piv), 0);
 
-  app::CalibrateOptions o;
+  CalibrateOptions o;
   o.base = base.string();
   o.vary = {"contact.kinetic_friction=0.2,0.5", "contact.rolling_friction=0.05,0.3"};
   o.target = piv.out;
@@ -96,7 +96,7 @@ TEST(Calibrate, PivOfARenderedTinyRunRanksItsOwnParametersFirst) {
   o.out = (dir / "calibration").string();
   o.threads = 1;  // the planted run's thread count: its case reproduces it bit for bit
   o.quiet = true;
-  const app::Calibration c = app::calibrate(o);
+  const Calibration c = calibrate(o);
   ASSERT_TRUE(c.complete);
   ASSERT_EQ(c.ranked.size(), 4u);
   EXPECT_EQ(c.ranked[0].values, (std::vector<std::string>{"0.5", "0.3"}));
@@ -117,7 +117,7 @@ TEST(Calibrate, PivOfARenderedTinyRunRanksItsOwnParametersFirst) {
   EXPECT_DOUBLE_EQ(e.material.particle.rolling_friction, 0.3);
 
   // Started again, nothing runs: every case is finished and the ranking is the same.
-  const app::Calibration again = app::calibrate(o);
+  const Calibration again = calibrate(o);
   EXPECT_EQ(again.ranked[0].case_name, c.ranked[0].case_name);
   EXPECT_DOUBLE_EQ(again.ranked[0].error, c.ranked[0].error);
   fs::remove_all(dir);

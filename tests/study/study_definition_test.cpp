@@ -5,11 +5,11 @@
 #include <filesystem>
 #include <fstream>
 
-#include "dem/errors.hpp"
+#include "core/errors.hpp"
 #include "io/config.hpp"
 #include "run_command.hpp"
 #include "study/study_definition.hpp"
-#include "study_command.hpp"
+#include "study/study_runner.hpp"
 
 namespace fs = std::filesystem;
 using namespace trapdem;
@@ -155,10 +155,10 @@ TEST(StudyDefinition, ThePaperStudyResolvesAtBothScales) {
   const std::vector<std::string> presets = {"paper-calibrated", "paper-rf1", "paper-rf2", "paper-rf3"};
   for (std::size_t k = 0; k < s.cases.size(); ++k) {
     for (const StudyScale& scale : s.scales) {
-      Config resolved = Config::parse(app::resolved_case_configuration(s.cases[k], scale), s.cases[k].name);
+      Config resolved = Config::parse(resolved_case_configuration(s.cases[k], scale, app::preset_directory()), s.cases[k].name);
       EXPECT_EQ(resolved.get_string("name", ""), s.cases[k].name);
     }
-    Config study_case = Config::parse(app::resolved_case_configuration(s.cases[k], s.scale("paper")), "study");
+    Config study_case = Config::parse(resolved_case_configuration(s.cases[k], s.scale("paper"), app::preset_directory()), "study");
     Config preset = Config::load_file((app::preset_directory() / (presets[k] + ".toml")).string());
     for (const char* key : {"contact.static_friction", "contact.kinetic_friction", "contact.rolling_friction",
                             "contact.rolling_model", "contact.restitution", "box.width", "trapdoor.width"})

@@ -16,8 +16,8 @@
 #include <regex>
 #include <thread>
 
-#include "analysis/json.hpp"
-#include "dem/errors.hpp"
+#include "core/json.hpp"
+#include "core/errors.hpp"
 #include "io/text_file.hpp"
 #include "study_command.hpp"
 

@@ -1,7 +1,8 @@
 #pragma once
-// A minimal JSON value for metrics.json: null, bool, number, string, array, object (keys kept in
-// insertion order), a writer with two-space indentation and a strict parser (for tests and for
-// tools reading metrics back). Non-finite numbers are written as null.
+// A minimal JSON value for the documents trapdem writes and reads back (metrics.json, run.json,
+// study.json, a study's summary.json): null, bool, number, string, array, object (keys kept in
+// insertion order), a writer with two-space indentation and a strict parser. Non-finite numbers
+// are written as null.
 #include <cstddef>
 #include <map>
 #include <memory>

@@ -1,4 +1,4 @@
-#include "analysis/dump_reader.hpp"
+#include "io/lammps_dump.hpp"
 
 #include <charconv>
 #include <fstream>
@@ -6,7 +6,7 @@
 #include <unordered_set>
 #include <vector>
 
-#include "dem/errors.hpp"
+#include "core/errors.hpp"
 #include "io/text.hpp"
 
 namespace trapdem {

@@ -1,12 +1,12 @@
-#include "analysis/json.hpp"
+#include "core/json.hpp"
 
 #include <charconv>
 #include <cmath>
 #include <fmt/format.h>
 #include <limits>
 
-#include "dem/errors.hpp"
-#include "io/text.hpp"
+#include "core/errors.hpp"
+#include "core/text_escape.hpp"
 
 namespace trapdem {
 

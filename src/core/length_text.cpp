@@ -1,11 +1,11 @@
-#include "analysis/length_text.hpp"
+#include "core/length_text.hpp"
 
 #include <cctype>
 #include <charconv>
 #include <cmath>
 #include <fmt/format.h>
 
-#include "dem/errors.hpp"
+#include "core/errors.hpp"
 
 namespace trapdem {
 
@@ -50,6 +50,19 @@ std::string format_mm(double metres) {
   if (s.back() == '.') s.pop_back();
   if (s == "-0") s = "0";
   return s + " mm";
+}
+
+std::vector<double> parse_length_list(std::string_view text, std::string_view what) {
+  std::vector<double> out;
+  std::size_t start = 0;
+  while (start <= text.size()) {
+    std::size_t end = text.find(',', start);
+    if (end == std::string_view::npos) end = text.size();
+    const std::string_view item = text.substr(start, end - start);
+    if (item.find_first_not_of(" \t") != std::string_view::npos) out.push_back(parse_length(item, what));
+    start = end + 1;
+  }
+  return out;
 }
 
 }  // namespace trapdem

@@ -1,0 +1,28 @@
+#pragma once
+// The trapdoor experiment from a configuration to a run folder, saved and resumable: what
+// `trapdem run` does and what a study runs for each case. Writes resolved.toml, run.log,
+// snapshots.h5, trapdoor.csv, checkpoint.h5 and run.json (RunFolder names them; docs/output.md).
+#include <cstdint>
+#include <filesystem>
+#include <string>
+#include <vector>
+
+namespace trapdem {
+
+struct FolderRunOptions {
+  std::filesystem::path config_file;    // the configuration (TOML) to run; unused with resume_dir
+  std::vector<std::string> overrides;   // "key.path=value", applied on top
+  std::filesystem::path out_dir;        // empty: ./trapdem-out/<name>
+  std::filesystem::path resume_dir;     // non-empty: carry on the run in this folder from its checkpoint
+  int threads = 0;                      // 0: the configuration's numerics.threads, else all cores
+  bool quiet = false;                   // no progress lines on the terminal (run.log still has them)
+  double stop_after_seconds = 0.0;      // > 0: stop (with a checkpoint) after this much wall clock
+  std::int64_t stop_at_step = 0;        // > 0: stop (with a checkpoint) at this engine step (tests)
+};
+
+// Runs (or resumes) the experiment into its folder. Returns true if it finished, false if it
+// stopped on SIGINT/SIGTERM or a stop rule (its checkpoint written: resume it). Throws InputError,
+// SimulationError or FileError; refuses a folder that already holds a run unless resuming.
+bool run_in_folder(const FolderRunOptions& options);
+
+}  // namespace trapdem

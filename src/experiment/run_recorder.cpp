@@ -1,0 +1,89 @@
+#include "experiment/run_recorder.hpp"
+
+#include <chrono>
+#include <cstdio>
+
+#include <fmt/format.h>
+
+#include "core/errors.hpp"
+#include "io/atomic_file.hpp"
+#include "io/checkpoint.hpp"
+#include "io/snapshot.hpp"
+
+namespace trapdem {
+
+double now_seconds() {
+  return std::chrono::duration<double>(std::chrono::steady_clock::now().time_since_epoch()).count();
+}
+
+std::string format_duration(double s) {
+  if (s < 0.0) return "?";
+  if (s < 120.0) return fmt::format("{:.0f} s", s);
+  if (s < 7200.0) return fmt::format("{:.1f} min", s / 60.0);
+  return fmt::format("{:.1f} h", s / 3600.0);
+}
+
+RunRecorder::RunRecorder(TrapdoorExperiment& experiment, RunFolder folder, bool quiet, RunStopRules stop)
+    : experiment_(experiment), folder_(std::move(folder)), quiet_(quiet), stop_(stop) {
+  log_.open(folder_.run_log(), std::ios::app);
+  if (!log_) throw FileError(fmt::format("cannot open {} for writing", folder_.run_log().string()));
+  started_ = last_checkpoint_ = now_seconds();
+}
+
+void RunRecorder::say(const std::string& line) {
+  if (!quiet_) {
+    fmt::print("{}\n", line);
+    std::fflush(stdout);
+  }
+  log_ << line << '\n';
+  log_.flush();
+}
+
+void RunRecorder::progress(const StageProgress& p) {
+  say(fmt::format("[{:<10}] {:5.1f}%  t = {:.4f} s  {:6.2f} M particle-steps/s  left {:>8}  {}", stage_name(p.stage),
+                  100.0 * p.fraction, p.simulated_time, p.particle_steps_per_second / 1e6,
+                  format_duration(p.seconds_left), p.detail));
+}
+
+void RunRecorder::stage_finished(Stage stage, const std::string& summary) {
+  say(fmt::format("stage {} finished at t = {:.4f} s (step {}): {}", stage_name(stage),
+                  experiment_.simulation().time(), experiment_.simulation().step_count(), summary));
+  checkpoint_wanted_ = true;  // every stage end is a checkpoint
+}
+
+void RunRecorder::snapshot_due(const std::string& label) {
+  const Simulation& sim = experiment_.simulation();
+  const std::string name =
+      append_snapshot(folder_.snapshots_h5(), make_snapshot(sim.particles(), sim.time(), label,
+                                                            experiment_.trapdoor_displacement(), sim.step_count()));
+  say(fmt::format("snapshot {} ({}, trapdoor at {:.2f} mm, {} particles)", name, label,
+                  experiment_.trapdoor_displacement() * 1e3, sim.particles().size()));
+}
+
+void RunRecorder::ground_reaction_row(const GroundReactionRow&, const std::vector<GroundReactionRow>& rows) {
+  write_text_atomically(folder_.trapdoor_csv(), ground_reaction_csv(rows));
+}
+
+bool RunRecorder::checkpoint_due() {
+  if (++calls_ % 256 != 0 && !checkpoint_wanted_) return false;
+  return checkpoint_wanted_ || now_seconds() - last_checkpoint_ >= experiment_.config().output.checkpoint_interval;
+}
+
+void RunRecorder::checkpoint(const std::map<std::string, std::string>& state) {
+  auto metadata = state;
+  metadata["run.name"] = experiment_.config().name;
+  save_checkpoint(folder_.checkpoint_h5(), experiment_.simulation(), std::move(metadata));
+  last_checkpoint_ = now_seconds();
+  checkpoint_wanted_ = false;
+  log_ << fmt::format("checkpoint at t = {:.6f} s (step {}, stage {})\n", experiment_.simulation().time(),
+                      experiment_.simulation().step_count(), stage_name(experiment_.stage()));
+  log_.flush();
+}
+
+bool RunRecorder::stop_requested() {
+  if (stop_.signal && *stop_.signal != 0) return true;
+  if (stop_.at_step > 0 && experiment_.simulation().step_count() >= stop_.at_step) return true;
+  return stop_.after_seconds > 0.0 && (++stop_calls_ % 64 == 0) && now_seconds() - started_ >= stop_.after_seconds;
+}
+
+}  // namespace trapdem

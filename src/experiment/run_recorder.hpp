@@ -1,0 +1,55 @@
+#pragma once
+// The observer that writes a run folder's files as the experiment reports its events: run.log
+// (and the terminal unless quiet), snapshots.h5, trapdoor.csv and checkpoint.h5 (every stage end
+// and every output.checkpoint_interval of wall clock); it asks the experiment to stop on a
+// signal, after a wall-clock budget or at a given step (tests).
+#include <atomic>
+#include <cstdint>
+#include <fstream>
+#include <map>
+#include <string>
+#include <vector>
+
+#include "experiment/run_folder.hpp"
+#include "experiment/trapdoor_experiment.hpp"
+
+namespace trapdem {
+
+struct RunStopRules {
+  const std::atomic<int>* signal = nullptr;  // non-zero: stop (SIGINT/SIGTERM seen)
+  double after_seconds = 0.0;                // > 0: stop after this much wall clock
+  std::int64_t at_step = 0;                  // > 0: stop at this engine step
+};
+
+class RunRecorder : public ExperimentObserver {
+ public:
+  // Opens the folder's run.log for appending; FileError if it cannot.
+  RunRecorder(TrapdoorExperiment& experiment, RunFolder folder, bool quiet, RunStopRules stop);
+
+  // A line for run.log and, unless quiet, the terminal.
+  void say(const std::string& line);
+
+  void progress(const StageProgress& p) override;
+  void stage_finished(Stage stage, const std::string& summary) override;
+  void snapshot_due(const std::string& label) override;
+  void ground_reaction_row(const GroundReactionRow& row, const std::vector<GroundReactionRow>& rows) override;
+  bool checkpoint_due() override;
+  void checkpoint(const std::map<std::string, std::string>& state) override;
+  bool stop_requested() override;
+
+ private:
+  TrapdoorExperiment& experiment_;
+  RunFolder folder_;
+  bool quiet_;
+  RunStopRules stop_;
+  std::ofstream log_;
+  double started_ = 0.0, last_checkpoint_ = 0.0;
+  bool checkpoint_wanted_ = false;
+  std::int64_t calls_ = 0, stop_calls_ = 0;
+};
+
+// Seconds of a monotonic clock, and a duration for progress lines ("42 s", "3.5 min", "2.0 h").
+double now_seconds();
+std::string format_duration(double seconds);
+
+}  // namespace trapdem

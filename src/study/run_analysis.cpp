@@ -1,0 +1,138 @@
+#include "study/run_analysis.hpp"
+
+#include <fmt/format.h>
+
+#include "analysis/analysis_output.hpp"
+#include "core/errors.hpp"
+#include "core/length_text.hpp"
+#include "experiment/ground_reaction.hpp"
+#include "experiment/run_folder.hpp"
+#include "io/text_file.hpp"
+#include "plot/line_chart.hpp"
+#include "plot/specimen_figures.hpp"
+
+namespace fs = std::filesystem;
+
+namespace trapdem {
+
+AnalysisSettings analysis_settings(const AnalyzeOptions& o) {
+  AnalysisSettings s;
+  if (!o.at.empty()) s.at = parse_length(o.at, "--at");
+  s.reference = parse_length(o.reference, "--reference");
+  if (o.view == "front") s.view = ViewKind::front;
+  else if (o.view == "all") s.view = ViewKind::all;
+  else throw InputError(fmt::format("--view '{}': expected front or all", o.view));
+  if (!o.front_depth.empty()) {
+    s.front_depth = parse_length(o.front_depth, "--front-depth");
+    if (!(s.front_depth > 0.0)) throw InputError("--front-depth must be positive");
+  }
+  if (!o.grid.empty()) {
+    s.grid_spacing = parse_length(o.grid, "--grid");
+    if (!(s.grid_spacing > 0.0)) throw InputError("--grid must be positive");
+  }
+  s.incremental = o.incremental;
+  return s;
+}
+
+SpecimenGeometry specimen_geometry(const ExperimentConfig& e) {
+  SpecimenGeometry g;
+  g.name = e.name;
+  g.box_width = e.box.width;
+  g.box_depth = e.box.depth;
+  g.box_height = e.box.height;
+  g.trapdoor = {e.trapdoor.centre, e.trapdoor.width, 0.0};
+  return g;
+}
+
+SpecimenGeometry load_specimen_geometry(const fs::path& config_file) {
+  return specimen_geometry(RunFolder::read_specimen(
+      config_file, "the analysis needs the box and trapdoor geometry (a run folder's resolved.toml, or --config FILE "
+                   "with [box] and [trapdoor])"));
+}
+
+AnalysisResult analyze_directory(const AnalyzeOptions& o) {
+  const RunFolder run(o.dir);
+  const SpecimenGeometry geometry = load_specimen_geometry(o.config.empty() ? run.resolved_toml() : fs::path(o.config));
+  const AnalysisSettings settings = analysis_settings(o);
+  if (!o.dumps.empty()) {
+    std::vector<fs::path> dumps(o.dumps.begin(), o.dumps.end());
+    return analyze_dump_files(dumps, parse_length_list(o.displacements, "--displacements"), geometry, settings);
+  }
+  if (!o.displacements.empty()) throw InputError("--displacements goes with --dumps");
+  const fs::path h5 = run.snapshots_h5();
+  if (!fs::exists(h5)) {
+    throw InputError(fmt::format("{}: not found (run `trapdem run` first, or give --dumps FILE...)", h5.string()));
+  }
+  return analyze_snapshot_file(h5, geometry, settings);
+}
+
+fs::path analysis_output_dir(const AnalyzeOptions& o) {
+  return o.out.empty() ? RunFolder(o.dir).analysis_dir() : fs::path(o.out);
+}
+
+namespace {
+
+void write_ground_reaction_figure(const fs::path& csv, const fs::path& png, const SpecimenGeometry& g) {
+  const auto rows = parse_ground_reaction_csv(read_text_file(csv), csv.string());
+  plot::LineChart chart;
+  chart.title = fmt::format("{}: ground reaction curve", g.name);
+  const double geostatic = rows.empty() ? 0.0 : rows.front().geostatic_stress;
+  chart.subtitle = fmt::format("stress over its value before lowering (trapdoor: {:.3g} kPa); B = {}", geostatic / 1e3,
+                               format_mm(g.trapdoor.width));
+  chart.x_label = "trapdoor displacement / trapdoor width  δ/B (-)";
+  chart.y_label = "stress / stress before lowering (-)";
+  chart.reference_y = {1.0};
+  auto series = [](const char* name, plot::Rgb colour, bool dashed, double width) {
+    plot::LineSeries s;
+    s.name = name;
+    s.colour = colour;
+    s.dashed = dashed;
+    s.width = width;
+    return s;
+  };
+  plot::LineSeries trapdoor = series("trapdoor", {0.80, 0.10, 0.10}, false, 3.0);
+  plot::LineSeries left = series("base, left", {0.13, 0.40, 0.67}, true, 2.5);
+  plot::LineSeries right = series("base, right", {0.20, 0.60, 0.30}, true, 2.5);
+  for (const auto& row : rows) {
+    const double x = row.trapdoor_displacement / g.trapdoor.width;
+    trapdoor.x.push_back(x);
+    trapdoor.y.push_back(row.trapdoor.ratio);
+    left.x.push_back(x);
+    left.y.push_back(row.base_left.ratio);
+    right.x.push_back(x);
+    right.y.push_back(row.base_right.ratio);
+  }
+  chart.series = {trapdoor, left, right};
+  plot::write_line_chart_png(png, chart);
+}
+
+}  // namespace
+
+AnalysisResult analyze_and_write(const AnalyzeOptions& o, std::vector<fs::path>* written_files) {
+  AnalysisResult r = analyze_directory(o);
+  const fs::path out = analysis_output_dir(o);
+  write_fields(out, r);
+  write_metrics(out, r);
+  std::vector<fs::path> written{out / "fields.h5", out / "fields.xmf", out / "metrics.json"};
+  if (!o.no_figures) {
+    plot::write_strain_map_png(out / "shear_strain.png", r, plot::StrainKind::total);
+    written.push_back(out / "shear_strain.png");
+    if (r.has_incremental) {
+      plot::write_strain_map_png(out / "shear_strain_incremental.png", r, plot::StrainKind::incremental);
+      written.push_back(out / "shear_strain_incremental.png");
+    }
+    plot::write_displacement_contours_png(out / "vertical_displacement.png", r);
+    written.push_back(out / "vertical_displacement.png");
+    plot::write_particles_png(out / "particles.png", r);
+    written.push_back(out / "particles.png");
+    const fs::path csv = RunFolder(o.dir).trapdoor_csv();
+    if (fs::exists(csv)) {
+      write_ground_reaction_figure(csv, out / "ground_reaction.png", r.geometry);
+      written.push_back(out / "ground_reaction.png");
+    }
+  }
+  if (written_files) *written_files = written;
+  return r;
+}
+
+}  // namespace trapdem

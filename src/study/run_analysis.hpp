@@ -1,0 +1,50 @@
+#pragma once
+// The analysis of a run folder (or of LAMMPS/LIGGGHTS dumps with a geometry file): the options as
+// `trapdem analyze` takes them, the run's geometry read through RunFolder, the analysis and its
+// outputs (fields.h5 + fields.xmf, metrics.json, figures) in DIR/analysis/. The study report and
+// the comparison with PIV call it too.
+#include <filesystem>
+#include <string>
+#include <vector>
+
+#include "analysis/analysis_run.hpp"
+#include "experiment/experiment_config.hpp"
+
+namespace trapdem {
+
+struct AnalyzeOptions {
+  std::string dir;                         // the run folder
+  std::string at;                          // "80mm"; empty: the last snapshot
+  std::string reference = "0mm";
+  std::string view = "front";              // front | all
+  std::string front_depth;                 // empty: 1.5 largest diameters
+  bool incremental = false;
+  std::string grid;                        // empty: half the mean diameter
+  std::vector<std::string> dumps;          // LAMMPS/LIGGGHTS text dumps instead of DIR/snapshots.h5
+  std::string displacements;               // "0mm,10mm,..." one per dump
+  std::string config;                      // geometry; empty: DIR/resolved.toml
+  std::string out;                         // empty: DIR/analysis
+  bool no_figures = false;
+  bool quiet = false;                      // no table on the terminal
+};
+
+// The settings the options describe (throws InputError on bad values).
+AnalysisSettings analysis_settings(const AnalyzeOptions& options);
+
+// The analysis' view of a specimen read by the experiment's configuration reader.
+SpecimenGeometry specimen_geometry(const ExperimentConfig& specimen);
+
+// The geometry in a run's resolved.toml or a short file with [box] and [trapdoor] (RunFolder::read_specimen).
+SpecimenGeometry load_specimen_geometry(const std::filesystem::path& config_file);
+
+// Runs the analysis of one folder (no output written).
+AnalysisResult analyze_directory(const AnalyzeOptions& options);
+
+// Where the outputs go: options.out, else DIR/analysis.
+std::filesystem::path analysis_output_dir(const AnalyzeOptions& options);
+
+// The analysis with its outputs (fields, metrics.json, figures unless no_figures) written to
+// analysis_output_dir(options); the files written go to `written_files` if given.
+AnalysisResult analyze_and_write(const AnalyzeOptions& options, std::vector<std::filesystem::path>* written_files = nullptr);
+
+}  // namespace trapdem

@@ -1,0 +1,229 @@
+#include "study/study_runner.hpp"
+
+#include <cstdio>
+#include <ctime>
+#include <fstream>
+#include <memory>
+
+#include <fmt/format.h>
+
+#include "analysis/analysis_output.hpp"
+#include "study/sinkhole_run.hpp"
+#include "core/errors.hpp"
+#include "core/json.hpp"
+#include "core/length_text.hpp"
+#include "experiment/experiment_config.hpp"
+#include "experiment/folder_run.hpp"
+#include "experiment/ground_reaction.hpp"
+#include "experiment/presets.hpp"
+#include "experiment/run_folder.hpp"
+#include "experiment/run_record.hpp"
+#include "io/atomic_file.hpp"
+#include "io/config.hpp"
+#include "io/text_file.hpp"
+#include "study/parameter_differences.hpp"
+#include "study/run_analysis.hpp"
+#include "study/study_report.hpp"
+
+namespace fs = std::filesystem;
+
+namespace trapdem {
+
+namespace {
+
+fs::path base_file(const ConfigRecipe& recipe, const fs::path& presets) {
+  return recipe.config.empty() ? preset_file(presets, recipe.preset) : recipe.config;
+}
+
+fs::path study_record(const fs::path& out) { return out / "study.json"; }
+
+// The first line where two resolved configurations differ, for the message.
+std::string first_difference(const std::string& a, const std::string& b) {
+  std::size_t line = 1, pos_a = 0, pos_b = 0;
+  while (pos_a < a.size() || pos_b < b.size()) {
+    const std::size_t end_a = std::min(a.find('\n', pos_a), a.size()), end_b = std::min(b.find('\n', pos_b), b.size());
+    const std::string la = a.substr(pos_a, end_a - pos_a), lb = b.substr(pos_b, end_b - pos_b);
+    if (la != lb) return fmt::format("line {}: '{}' there, '{}' now", line, la, lb);
+    pos_a = end_a + 1;
+    pos_b = end_b + 1;
+    ++line;
+  }
+  return "";
+}
+
+}  // namespace
+
+void log_study_line(const fs::path& out, const std::string& line, bool quiet) {
+  if (!quiet) {
+    fmt::print("{}\n", line);
+    std::fflush(stdout);
+  }
+  std::ofstream log(out / "study.log", std::ios::app);
+  const std::time_t now = std::time(nullptr);
+  char stamp[32];
+  std::strftime(stamp, sizeof stamp, "%Y-%m-%d %H:%M:%S", std::localtime(&now));
+  log << stamp << "  " << line << '\n';
+}
+
+std::string resolved_case_configuration(const StudyCase& c, const StudyScale& scale, const fs::path& presets) {
+  const ConfigRecipe recipe = case_recipe(c, scale);
+  try {
+    Config config = Config::load_file(base_file(recipe, presets).string());
+    config.apply_overrides(recipe.overrides);
+    ExperimentConfig::from(config);
+    return config.resolved_toml();
+  } catch (const InputError& e) {
+    throw InputError(fmt::format("case '{}': {}", c.name, e.what()));
+  }
+}
+
+fs::path case_directory(const fs::path& out, const StudyCase& study_case) { return out / "cases" / study_case.name; }
+
+bool holds_study(const fs::path& out) { return fs::exists(study_record(out)); }
+
+void claim_study_folder(const StudyDefinition& study, const StudyScale& scale, const fs::path& out) {
+  const fs::path record = study_record(out);
+  if (fs::exists(record)) {
+    const Json j = Json::parse(read_text_file(record), record.string());
+    const std::string name = j["study"].as_string(), was = j["scale"].as_string();
+    if (name != study.name || was != scale.name)
+      throw InputError(fmt::format("{} holds study '{}' at scale '{}', not '{}' at '{}': choose another --out",
+                                   out.string(), name, was, study.name, scale.name));
+    return;
+  }
+  Json j = Json::object();
+  j.set("study", study.name);
+  j.set("scale", scale.name);
+  j.set("study_file", study.source.empty() ? "" : fs::absolute(study.source).string());
+  Json cases = Json::array();
+  for (const StudyCase& c : study.cases) cases.push_back(c.name);
+  j.set("cases", cases);
+  write_text_atomically(record, j.dump() + "\n");
+}
+
+bool run_study_cases(const StudyDefinition& study, const StudyScale& scale, const fs::path& out,
+                     const StudyRunSettings& settings) {
+  const bool quiet = settings.quiet;
+  // Every case's configuration first, and each against what its folder holds: a typo in the fourth
+  // case, or a case changed since it ran, should not wait for three runs.
+  for (const StudyCase& c : study.cases) {
+    const std::string resolved = resolved_case_configuration(c, scale, settings.preset_directory);
+    const RunFolder run(case_directory(out, c));
+    const fs::path& dir = run.path();
+    if (!run.has_checkpoint() && !run_finished(run)) continue;
+    const std::string there = fs::exists(run.resolved_toml()) ? read_text_file(run.resolved_toml()) : "";
+    if (there != resolved)
+      throw InputError(fmt::format("{}: holds a run of another configuration than case '{}' now has ({}); remove "
+                                   "the folder to run the case again, or choose another --out",
+                                   dir.string(), c.name, first_difference(there, resolved)));
+  }
+
+  for (std::size_t k = 0; k < study.cases.size(); ++k) {
+    const StudyCase& c = study.cases[k];
+    const RunFolder folder(case_directory(out, c));
+    const fs::path& dir = folder.path();
+    const std::string counter = fmt::format("[{}/{}] {}", k + 1, study.cases.size(), c.name);
+    const bool has_checkpoint = folder.has_checkpoint();
+    FolderRunOptions run;
+    run.threads = settings.threads;
+    run.quiet = quiet;
+    if (run_finished(folder)) {
+      log_study_line(out, fmt::format("{}: finished before, skipped", counter), quiet);
+      continue;
+    }
+    if (has_checkpoint) {
+      log_study_line(out, fmt::format("{}: resuming from its checkpoint", counter), quiet);
+      run.resume_dir = dir;
+    } else {
+      // Killed before its first checkpoint: nothing to keep.
+      if (fs::exists(dir)) fs::remove_all(dir);
+      const ConfigRecipe recipe = case_recipe(c, scale);
+      log_study_line(out, fmt::format("{}: running ({})", counter, c.label), quiet);
+      run.config_file = base_file(recipe, settings.preset_directory);
+      run.overrides = recipe.overrides;
+      run.out_dir = dir;
+    }
+    if (!run_in_folder(run)) {
+      log_study_line(out, fmt::format("{}: interrupted (checkpoint written); run the same command again to carry on", counter), quiet);
+      return false;
+    }
+    log_study_line(out, fmt::format("{}: finished", counter), quiet);
+  }
+  return true;
+}
+
+fs::path write_study_outputs(const StudyDefinition& study, const StudyScale& scale, const fs::path& out, bool quiet) {
+  StudyReportInput input;
+  input.study_name = study.name;
+  input.description = study.description;
+  input.scale = scale.name;
+  input.scale_description = scale.description;
+  input.settings = study.report;
+  // Results live here so that the report can point at them.
+  std::vector<std::unique_ptr<AnalysisResult>> finals, contours;
+  for (const StudyCase& c : study.cases) {
+    const RunFolder run(case_directory(out, c));
+    const fs::path& dir = run.path();
+    StudyCaseResult r;
+    r.run_dir = dir;
+    r.summary.name = c.name;
+    r.summary.label = c.label;
+    if (!run_finished(run)) {
+      r.missing_note = "the run has not finished";
+      input.cases.push_back(std::move(r));
+      continue;
+    }
+    AnalyzeOptions a;
+    a.dir = dir.string();
+    a.quiet = true;
+    try {
+      finals.push_back(std::make_unique<AnalysisResult>(analyze_and_write(a)));
+    } catch (const InputError& e) {
+      // One case that cannot be analysed (too few particles in view, say) does not hide the others.
+      r.missing_note = fmt::format("not analysed: {}", e.what());
+      r.summary.cost = read_case_cost(dir);
+      input.cases.push_back(std::move(r));
+      continue;
+    }
+    AnalysisResult& final_analysis = *finals.back();
+    final_analysis.geometry.name = c.label;
+    r.final_analysis = &final_analysis;
+    read_mechanism_metrics(metrics_json(final_analysis), r.summary);
+
+    AnalyzeOptions at = a;
+    at.at = fmt::format("{}m", study.report.contours_at);
+    try {
+      contours.push_back(std::make_unique<AnalysisResult>(analyze_directory(at)));
+      contours.back()->geometry.name = c.label;
+      r.contour_analysis = contours.back().get();
+    } catch (const InputError& e) {
+      r.missing_note = fmt::format("no contours at {}: {}", format_mm(study.report.contours_at), e.what());
+    }
+    const fs::path csv = run.trapdoor_csv();
+    if (fs::exists(csv))
+      read_ground_reaction(parse_ground_reaction_csv(read_text_file(csv), csv.string()), r.summary.trapdoor_width,
+                           r.summary);
+    r.summary.cost = read_case_cost(dir);
+    try {
+      read_sinkhole_comparison(compare_with_dem(read_dem_run(dir), study.report.angle_of_draw_deg), r.summary);
+    } catch (const InputError& e) {
+      if (!quiet) fmt::print("{}: no sinkhole estimate: {}\n", c.name, e.what());
+    }
+    r.parameters = resolved_parameters(dir);
+    input.cases.push_back(std::move(r));
+  }
+  return write_study_report(out / "report", input);
+}
+
+bool run_study_in_folder(const StudyDefinition& study, const StudyScale& scale, const fs::path& out,
+                         const StudyRunSettings& settings) {
+  std::error_code ec;
+  fs::create_directories(out, ec);
+  if (ec) throw FileError(fmt::format("cannot create the study folder {}: {}", out.string(), ec.message()));
+  claim_study_folder(study, scale, out);
+  log_study_line(out, fmt::format("study '{}' at scale '{}' ({} cases) in {}", study.name, scale.name,
+                                  study.cases.size(), out.string()), settings.quiet);
+  return run_study_cases(study, scale, out, settings);
+}
+
+}  // namespace trapdem

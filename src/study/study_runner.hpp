@@ -1,0 +1,48 @@
+#pragma once
+// Runs a study's cases one after another, each in DIR/cases/<name>/ (experiment/folder_run.hpp),
+// then analyses them and writes DIR/report/index.html (docs/study.md). Started again on the same
+// folder it skips finished cases and resumes an unfinished one from its checkpoint, so an
+// interrupted study loses at most the work since the last checkpoint.
+#include <filesystem>
+#include <string>
+
+#include "study/study_definition.hpp"
+
+namespace trapdem {
+
+struct StudyRunSettings {
+  std::filesystem::path preset_directory;  // where the recipes' preset names are found
+  int threads = 0;                         // OpenMP threads per run; 0: each configuration's numerics.threads
+  bool quiet = false;                      // the runs' progress lines only in their run.log
+};
+
+// The case's configuration at the scale as `trapdem run` resolves it (resolved.toml's text); throws
+// InputError naming the case if it does not validate.
+std::string resolved_case_configuration(const StudyCase& study_case, const StudyScale& scale,
+                                        const std::filesystem::path& preset_directory);
+
+std::filesystem::path case_directory(const std::filesystem::path& out, const StudyCase& study_case);
+
+// Runs (or resumes, or skips) every case of `study` at `scale` into out/cases/<name>. Returns false
+// if a run was interrupted (SIGINT/SIGTERM: its checkpoint is written). Throws InputError if a case's
+// folder holds a run of another configuration.
+bool run_study_cases(const StudyDefinition& study, const StudyScale& scale, const std::filesystem::path& out,
+                     const StudyRunSettings& settings);
+
+// The study's identity in its folder (out/study.json): written the first time, and another study or
+// scale in the same folder refused (InputError).
+void claim_study_folder(const StudyDefinition& study, const StudyScale& scale, const std::filesystem::path& out);
+bool holds_study(const std::filesystem::path& out);
+
+// Creates `out`, claims it for this study and scale (refusing another's), then run_study_cases.
+bool run_study_in_folder(const StudyDefinition& study, const StudyScale& scale, const std::filesystem::path& out,
+                         const StudyRunSettings& settings);
+
+// Analyses every finished case and writes out/report/. Returns the page's path.
+std::filesystem::path write_study_outputs(const StudyDefinition& study, const StudyScale& scale,
+                                          const std::filesystem::path& out, bool quiet);
+
+// Appends a line to out/study.log (time-stamped) and prints it unless quiet.
+void log_study_line(const std::filesystem::path& out, const std::string& line, bool quiet);
+
+}  // namespace trapdem
