@@ -15,6 +15,8 @@
 #include <string>
 #include <vector>
 
+#include <unistd.h>
+
 namespace {
 
 namespace fs = std::filesystem;
@@ -70,67 +72,82 @@ double json_number(const std::string& text, const std::vector<std::string>& path
 }
 
 TEST(DemoPipelineSlow, RunAndAnalyzeShowArchingShearBandsAndAZoneOfInfluence) {
-  const fs::path dir = fs::temp_directory_path() / "trapdem-demo-pipeline-test";
+  const fs::path dir = fs::temp_directory_path() / ("trapdem-demo-pipeline-" + std::to_string(::getpid()));
   fs::remove_all(dir);
   fs::create_directories(dir);
-  const fs::path run = dir / "demo";
-  ASSERT_EQ(trapdem("run --preset demo --quiet --out '" + run.string() + "'", dir / "run.out"), 0)
-      << read_text(dir / "run.out");
+  // TRAPDEM_DEMO_RUN=FOLDER checks a demo run made and analysed before (e.g. `make demo`'s
+  // trapdem-out/demo) instead of making one.
+  const char* given = std::getenv("TRAPDEM_DEMO_RUN");
+  const fs::path run = given ? fs::path(given) : dir / "demo";
+  SCOPED_TRACE("run folder " + run.string() + " (kept when the test fails)");
+  if (!given) {
+    ASSERT_EQ(trapdem("run --preset demo --quiet --out '" + run.string() + "'", dir / "run.out"), 0)
+        << read_text(dir / "run.out");
+    ASSERT_EQ(trapdem("analyze '" + run.string() + "' --quiet", dir / "analyze.out"), 0)
+        << read_text(dir / "analyze.out");
+  }
   EXPECT_NE(read_text(run / "run.log").find("\nfinished"), std::string::npos) << "run.log has no 'finished' line";
-  ASSERT_EQ(trapdem("analyze '" + run.string() + "' --quiet", dir / "analyze.out"), 0) << read_text(dir / "analyze.out");
 
   const double B = 0.05;       // m, trapdoor width (presets/demo.toml)
   const double travel = 0.02;  // m
   auto grc = read_csv_columns(run / "trapdoor.csv");
   const auto& delta = grc["trapdoor_displacement_m"];
-  const auto& ratio = grc["trapdoor_stress_ratio"];
-  const auto& trapdoor_force = grc["trapdoor_force_N"];
-  const auto& left_force = grc["base_left_force_N"];
-  const auto& right_force = grc["base_right_force_N"];
   // One row at the start, one each 0.5 mm (output.ground_reaction_step) and one at the end.
   ASSERT_GE(delta.size(), 40u);
-  ASSERT_EQ(ratio.size(), delta.size());
-  ASSERT_EQ(left_force.size(), delta.size());
+  for (const char* name : {"trapdoor_stress_Pa", "trapdoor_stress_ratio", "base_left_stress_Pa", "base_right_stress_Pa",
+                           "base_left_stress_ratio", "base_right_stress_ratio"})
+    ASSERT_EQ(grc[name].size(), delta.size()) << "trapdoor.csv column " << name;
+  const auto& ratio = grc["trapdoor_stress_ratio"];
   EXPECT_NEAR(delta.back(), travel, 1e-4);
 
-  // Before lowering the trapdoor carries the stress of the base beside it: it is part of the base.
-  const double base_width = (0.25 - B) / 2;  // m, each side
-  const double trapdoor_stress_over_base = (trapdoor_force[0] / B) / ((left_force[0] + right_force[0]) / (2 * base_width));
-  std::printf("[ measured ] before lowering: trapdoor stress / base stress %.3f\n", trapdoor_stress_over_base);
-  EXPECT_NEAR(trapdoor_stress_over_base, 1.0, 0.35);
+  // Before lowering the trapdoor carries about the stress of the base beside it (it is part of the
+  // base), somewhat more: the side walls take part of the weight by friction (Janssen), more near
+  // them than in the middle where the trapdoor is. The tiny preset's few force chains spread this
+  // ratio over 1.06-1.54 (tests/experiment/tiny_run_test.cpp); a load lost, counted twice or of the
+  // wrong sign falls far outside 0.8-1.6.
+  const double trapdoor_over_base =
+      grc["trapdoor_stress_Pa"][0] / (0.5 * (grc["base_left_stress_Pa"][0] + grc["base_right_stress_Pa"][0]));
+  std::printf("[ measured ] before lowering: trapdoor stress / base stress %.3f\n", trapdoor_over_base);
+  EXPECT_GT(trapdoor_over_base, 0.8);
+  EXPECT_LT(trapdoor_over_base, 1.6);
 
   // Arching (Terzaghi 1936; the paper's ground reaction curves): the trapdoor's load falls to a
-  // small fraction of its initial value within a few per cent of B, then recovers somewhat as the
-  // mechanism becomes a sliding column.
+  // fraction of its initial value early in the travel, then recovers somewhat as the soil above
+  // slides down as a column. Measured on this preset (docs/study.md, Table 2 at the demo's scale,
+  // "Calibrated"): least 0.296, final 0.395. Bounds: half the initial load (a run without arching
+  // stays near 1) and the first half of the travel.
   std::size_t least = 0;
   for (std::size_t k = 0; k < ratio.size(); ++k)
     if (ratio[k] < ratio[least]) least = k;
   std::printf("[ measured ] least trapdoor load ratio %.3f at delta/B %.3f; final %.3f\n", ratio[least],
               delta[least] / B, ratio.back());
-  EXPECT_LT(ratio[least], 0.35);
-  EXPECT_LT(delta[least] / B, 0.15);
-  EXPECT_GT(ratio.back(), ratio[least]);
+  EXPECT_LT(ratio[least], 0.5);
+  EXPECT_LT(delta[least], travel / 2);
+  EXPECT_GT(ratio.back(), ratio[least] + 0.03);
+  // The load the trapdoor sheds goes to the base beside it.
+  EXPECT_GT(grc["base_left_stress_ratio"].back() + grc["base_right_stress_ratio"].back(), 2.0);
 
-  // The load the trapdoor sheds goes to the base beside it: trapdoor + base carry the same total
-  // before and at the end (the side walls' friction takes a part that changes little).
-  const double total_before = trapdoor_force.front() + left_force.front() + right_force.front();
-  const double total_after = trapdoor_force.back() + left_force.back() + right_force.back();
-  std::printf("[ measured ] trapdoor + base load: %.1f N before, %.1f N at the end\n", total_before, total_after);
-  EXPECT_NEAR(total_after / total_before, 1.0, 0.1);
-
-  // The analysis: shear bands rise from both edges of the trapdoor, and the surface settles over a
-  // zone wider than the trapdoor.
+  // The analysis: a shear band rises from each edge of the trapdoor, near vertical, up to about the
+  // surface (docs/study.md: 2.1 / 4.3 degrees to the vertical, 4.24 B high in a 4.2 B deep bed;
+  // docs/sinkhole.md, another run: 0.1 / 4.0 degrees), and the surface settles over a zone much
+  // wider than the trapdoor (4.01 B and 4.19 B in those runs; the box is 5 B wide).
   const std::string metrics = read_text(run / "analysis" / "metrics.json");
   ASSERT_FALSE(metrics.empty()) << "no analysis/metrics.json";
   const double left_angle = json_number(metrics, {"shear_bands", "left", "angle_deg"});
   const double right_angle = json_number(metrics, {"shear_bands", "right", "angle_deg"});
   const double left_height = json_number(metrics, {"shear_bands", "left", "height_reached_over_B"});
+  const double right_height = json_number(metrics, {"shear_bands", "right", "height_reached_over_B"});
   const double zone_surface = json_number(metrics, {"zone_of_influence", "surface_width_over_B"});
-  std::printf("[ measured ] band angles %.1f / %.1f deg from the vertical, left band height %.2f B; "
-              "surface zone %.2f B\n",
-              left_angle, right_angle, left_height, zone_surface);
-  EXPECT_TRUE(std::isfinite(left_angle) && std::isfinite(right_angle)) << "a shear band was not found";
-  EXPECT_GT(zone_surface, 1.0);
+  std::printf("[ measured ] band angles %.1f / %.1f deg to the vertical, heights %.2f / %.2f B; surface zone %.2f B\n",
+              left_angle, right_angle, left_height, right_height, zone_surface);
+  for (double angle : {left_angle, right_angle}) {  // NaN (no band found) fails both
+    EXPECT_GT(angle, -10.0);
+    EXPECT_LT(angle, 15.0);
+  }
+  EXPECT_GT(left_height, 3.0);
+  EXPECT_GT(right_height, 3.0);
+  EXPECT_GT(zone_surface, 2.5);
+  EXPECT_LE(zone_surface, 5.0);
   fs::remove_all(dir);
 }
 
