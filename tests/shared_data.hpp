@@ -10,7 +10,7 @@
 
 namespace trapdem::test {
 
-inline std::filesystem::path shared_dir() { return std::filesystem::path(TRAPDEM_SHARED_DIR); }
+inline std::filesystem::path shared_dir() { return std::filesystem::path(TRAPDEM_SHARED_DIR).lexically_normal(); }
 
 // Success when every file exists; otherwise a failure listing the missing ones.
 inline ::testing::AssertionResult shared_files_present(const std::vector<std::filesystem::path>& files) {

@@ -17,7 +17,7 @@ namespace trapdem {
 namespace {
 
 TEST(PivRealPhotographs, UpliftSequenceFollowedAndHeaveAboveThePlate) {
-  const std::filesystem::path dir = std::filesystem::path(TRAPDEM_SHARED_DIR) / "data" / "uplift-photos";
+  const std::filesystem::path dir = test::shared_dir() / "data" / "uplift-photos";
   const std::vector<std::filesystem::path> files = {dir / "IMG_00.jpg", dir / "IMG_40.jpg", dir / "IMG_68.jpg"};
   ASSERT_TRUE(test::shared_files_present(files));
 
