@@ -1,9 +1,12 @@
 # trapdem: the two Quick-start commands (make demo, make test) and the benchmarks.
 BUILD ?= build
+ASAN_BUILD ?= build-asan
 JOBS ?= $(shell nproc)
 CMAKE_FLAGS ?=
+# ccache, where installed, shares compiled objects between build folders (build, build-asan).
+LAUNCHER := $(if $(shell command -v ccache),-DCMAKE_CXX_COMPILER_LAUNCHER=ccache)
 
-.PHONY: all deps configure build test test-slow demo study bench bench-peers clean
+.PHONY: all deps configure build test test-slow test-asan demo study bench bench-peers clean
 
 all: build
 
@@ -11,7 +14,7 @@ deps:
 	@bash scripts/install-deps
 
 configure: deps
-	@cmake -S . -B $(BUILD) -DCMAKE_BUILD_TYPE=Release $(CMAKE_FLAGS) > $(BUILD).cmake.log 2>&1 || (cat $(BUILD).cmake.log; exit 1)
+	@cmake -S . -B $(BUILD) -DCMAKE_BUILD_TYPE=Release $(LAUNCHER) $(CMAKE_FLAGS) > $(BUILD).cmake.log 2>&1 || (cat $(BUILD).cmake.log; exit 1)
 
 build: configure
 	@cmake --build $(BUILD) -j $(JOBS)
@@ -20,8 +23,18 @@ build: configure
 test: build
 	@cd $(BUILD) && ctest --output-on-failure -j $(JOBS) -LE slow
 
+# The slow validations (tests/<module>/slow: the whole photograph sequence, a demo-scale run), one
+# at a time: each uses every core.
 test-slow: build
 	@cd $(BUILD) && ctest --output-on-failure -L slow
+
+# The fast suite again, every library and test built with AddressSanitizer and
+# UndefinedBehaviorSanitizer in its own folder; any finding fails the test that met it.
+test-asan: deps
+	@cmake -S . -B $(ASAN_BUILD) -DCMAKE_BUILD_TYPE=RelWithDebInfo -DTRAPDEM_SANITIZE="address;undefined" \
+	  -DTRAPDEM_BUILD_BENCH=OFF $(LAUNCHER) $(CMAKE_FLAGS) > $(ASAN_BUILD).cmake.log 2>&1 || (cat $(ASAN_BUILD).cmake.log; exit 1)
+	@cmake --build $(ASAN_BUILD) -j $(JOBS)
+	@cd $(ASAN_BUILD) && ctest --output-on-failure -j $(JOBS) -LE slow
 
 demo: build
 	@bash scripts/demo.sh $(BUILD)
@@ -38,4 +51,4 @@ bench-peers: build
 	@bash bench/run-peers.sh $(BUILD)
 
 clean:
-	rm -rf $(BUILD) $(BUILD).cmake.log
+	rm -rf $(BUILD) $(BUILD).cmake.log $(ASAN_BUILD) $(ASAN_BUILD).cmake.log

@@ -68,8 +68,14 @@ std::string metrics_csv(const StudyReportInput& in) {
                           s.min_load_ratio, s.min_load_at_over_b, s.final_load_ratio, s.dem_surface_diameter,
                           s.supposition_surface_diameter, s.cost.wall_seconds, s.cost.particle_steps_per_second,
                           s.cost.particles};
-    out += s.name + "," + s.label;
-    for (double x : row) out += "," + csv_number(x);
+    // Appended piece by piece: `out += a + "," + b` trips GCC 12's false -Wrestrict (GCC bug 105651).
+    out += s.name;
+    out += ',';
+    out += s.label;
+    for (double x : row) {
+      out += ',';
+      out += csv_number(x);
+    }
     out += "\n";
   }
   return out;

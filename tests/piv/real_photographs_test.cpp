@@ -1,7 +1,7 @@
 // Smoke test on three of the real uplift photographs (shared/data/uplift-photos: a plate pulled up
 // through sand behind a window), halved to 2048 x 1500 px: the sand is followed from the first to
 // the last photograph of the sequence, with reference updating, and the soil above the plate
-// heaves. Skipped when the shared data are not there.
+// heaves. Fails when the shared data are not there.
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -10,16 +10,16 @@
 
 #include <opencv2/imgproc.hpp>
 
+#include "../shared_data.hpp"
 #include "piv/run_piv.hpp"
 
 namespace trapdem {
 namespace {
 
 TEST(PivRealPhotographs, UpliftSequenceFollowedAndHeaveAboveThePlate) {
-  const std::filesystem::path dir = std::filesystem::path(TRAPDEM_SHARED_DIR) / "data" / "uplift-photos";
+  const std::filesystem::path dir = test::shared_dir() / "data" / "uplift-photos";
   const std::vector<std::filesystem::path> files = {dir / "IMG_00.jpg", dir / "IMG_40.jpg", dir / "IMG_68.jpg"};
-  for (const auto& f : files)
-    if (!std::filesystem::exists(f)) GTEST_SKIP() << "no " << f << " (shared data missing)";
+  ASSERT_TRUE(test::shared_files_present(files));
 
   constexpr double scale = 0.5;  // 4096 x 3000 -> 2048 x 1500
   PivSettings settings;
