@@ -93,12 +93,19 @@ StudyDefinition calibration_study(const CalibrateOptions& o, const std::vector<V
 
 std::string rows_csv(const Calibration& c) {
   std::string out = "rank,case";
-  for (const VariedKey& k : c.keys) out += "," + k.key;
+  // Appended piece by piece: `out += "," + x` trips GCC 12's false -Wrestrict (GCC bug 105651).
+  for (const VariedKey& k : c.keys) {
+    out += ',';
+    out += k.key;
+  }
   out += ",rms_over_delta,bias_over_delta,coverage\n";
   for (std::size_t r = 0; r < c.ranked.size(); ++r) {
     const CalibrationRow& row = c.ranked[r];
     out += fmt::format("{},{}", r + 1, row.case_name);
-    for (const std::string& v : row.values) out += "," + name_part(v);
+    for (const std::string& v : row.values) {
+      out += ',';
+      out += name_part(v);
+    }
     out += fmt::format(",{:.6g},{:.6g},{:.4f}\n", row.error, row.bias, row.coverage);
   }
   return out;
