@@ -1,5 +1,5 @@
 // Micro-benchmarks of the engine's two hot spots:
-//   * contact_force(): the contact law on a batch of prepared contacts (no neighbour access), per
+//   * ContactEvaluator::evaluate(): the contact law on a batch of prepared contacts (no neighbour access), per
 //     rolling model (0 none, 1 constant torque, 2 elastic-plastic EPSD as in the standard benchmark);
 //   * the neighbour-list build: sort_into_cells() + build_pairs() on a random (jittered lattice)
 //     packing of 2 mm spheres with the standard benchmark's skin, for N and the OpenMP thread count.
@@ -12,8 +12,9 @@
 #include <random>
 #include <vector>
 
-#include "dem/contact_kernel.hpp"
-#include "dem/neighbor_list.hpp"
+#include "dem/contact/law.hpp"
+#include "dem/cell_sort.hpp"
+#include "dem/pair_list.hpp"
 #include "dem/particles.hpp"
 
 using namespace trapdem;
@@ -62,13 +63,22 @@ ContactLaw standard_law(int rolling) {
   return law;
 }
 
-void BM_ContactForce(benchmark::State& state) {
-  const ContactConstants c = make_constants(standard_law(static_cast<int>(state.range(0))));
-  std::vector<ContactCase> cases = make_contacts(4096);
+// The law's instance for standard_law(rolling): what law_choices() gives for it.
+constexpr LawChoices kStandardChoices[] = {
+    LawChoices{},
+    LawChoices{NormalModel::linear, RollingModel::constant_torque, RollingLeverArm::effective_radius,
+               RollingStiffness::ai2011, false},
+    LawChoices{NormalModel::linear, RollingModel::elastic_plastic, RollingLeverArm::effective_radius,
+               RollingStiffness::tangential, false},
+};
+
+template <LawChoices kLaw>
+void contact_force_loop(benchmark::State& state, const LawParams& c, std::vector<ContactCase>& cases) {
   const double m = kDensity * 4.0 / 3.0 * M_PI * kRadius * kRadius * kRadius;
   const double inertia = 0.4 * m * kRadius * kRadius;
   ContactBodies b;
   b.effective_mass = 0.5 * m;
+  b.effective_radius = 0.5 * kRadius;
   b.lever = 0.5 * kRadius;
   b.rolling_inertia = 0.5 * (inertia + m * kRadius * kRadius);
   b.spin_inertia = 0.5 * inertia;
@@ -77,13 +87,28 @@ void BM_ContactForce(benchmark::State& state) {
     Vec3 sum{};
     for (ContactCase& k : cases) {
       b.arm_i = b.arm_j = kRadius - 0.5 * k.overlap;
-      const ContactForce f = contact_force(c, b, k.normal, k.overlap, k.relative_velocity, k.w_i, k.w_j, k.history, dt);
+      const ContactForce f =
+          ContactEvaluator<kLaw>::evaluate(c, b, k.normal, k.overlap, k.relative_velocity, k.w_i, k.w_j, k.history, dt);
       sum += f.force + f.rolling_torque;
     }
     benchmark::DoNotOptimize(sum);
   }
+}
+
+void BM_ContactForce(benchmark::State& state) {
+  const int rolling = static_cast<int>(state.range(0));
+  const ContactLaw law = standard_law(rolling);
+  if (!(law_choices(law) == kStandardChoices[rolling])) {
+    state.SkipWithError("the standard law's choices differ from the instance compiled for it");
+    return;
+  }
+  const LawParams c = law_params(law, law);
+  std::vector<ContactCase> cases = make_contacts(4096);
+  if (rolling == 0) contact_force_loop<kStandardChoices[0]>(state, c, cases);
+  if (rolling == 1) contact_force_loop<kStandardChoices[1]>(state, c, cases);
+  if (rolling == 2) contact_force_loop<kStandardChoices[2]>(state, c, cases);
   state.SetItemsProcessed(state.iterations() * std::int64_t(cases.size()));
-  state.SetLabel(state.range(0) == 0 ? "no rolling" : (state.range(0) == 1 ? "constant torque" : "EPSD"));
+  state.SetLabel(rolling == 0 ? "no rolling" : (rolling == 1 ? "constant torque" : "EPSD"));
 }
 BENCHMARK(BM_ContactForce)->Arg(0)->Arg(1)->Arg(2);
 

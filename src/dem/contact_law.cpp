@@ -1,10 +1,12 @@
 #include "dem/contact_law.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <numbers>
 
 #include <fmt/format.h>
 
+#include "dem/contact/law.hpp"
 #include "core/errors.hpp"
 
 namespace trapdem {
@@ -15,67 +17,98 @@ double ContactLaw::damping_ratio() const {
   return -log_e / std::sqrt(log_e * log_e + std::numbers::pi * std::numbers::pi);
 }
 
+namespace {
+[[noreturn]] void fail(const std::string& where, const char* key, double value, const char* expected) {
+  throw InputError(fmt::format("{}.{} = {}: expected {}", where, key, value, expected));
+}
+}  // namespace
+
 void ContactLaw::validate(const std::string& where) const {
-  auto fail = [&](const char* key, double value, const char* expected) {
-    throw InputError(fmt::format("{}.{} = {}: expected {}", where, key, value, expected));
-  };
-  if (!(normal_stiffness > 0.0) || !std::isfinite(normal_stiffness)) fail("normal_stiffness", normal_stiffness, "a positive stiffness in N/m");
-  if (!(tangential_stiffness >= 0.0) || !std::isfinite(tangential_stiffness)) fail("tangential_stiffness", tangential_stiffness, "a stiffness >= 0 in N/m");
-  if (!(restitution > 0.0 && restitution <= 1.0)) fail("restitution", restitution, "a coefficient of restitution in (0, 1]");
-  if (!(static_friction >= 0.0)) fail("static_friction", static_friction, "a friction coefficient >= 0");
-  if (!(kinetic_friction >= 0.0)) fail("kinetic_friction", kinetic_friction, "a friction coefficient >= 0");
-  if (!(rolling_friction >= 0.0)) fail("rolling_friction", rolling_friction, "a rolling friction coefficient >= 0");
-  if (!(rolling_damping >= 0.0)) fail("rolling_damping", rolling_damping, "a damping ratio >= 0");
-}
-
-RollingModel parse_rolling_model(const std::string& name) {
-  if (name == "none") return RollingModel::none;
-  if (name == "constant_torque") return RollingModel::constant_torque;
-  if (name == "elastic_plastic") return RollingModel::elastic_plastic;
-  throw InputError(fmt::format("rolling model '{}': expected one of none, constant_torque, elastic_plastic", name));
-}
-
-RollingLeverArm parse_lever_arm(const std::string& name) {
-  if (name == "average_radius") return RollingLeverArm::average_radius;
-  if (name == "effective_radius") return RollingLeverArm::effective_radius;
-  throw InputError(fmt::format("rolling lever arm '{}': expected average_radius or effective_radius", name));
-}
-
-RollingStiffness parse_rolling_stiffness(const std::string& name) {
-  if (name == "ai2011") return RollingStiffness::ai2011;
-  if (name == "tangential") return RollingStiffness::tangential;
-  throw InputError(fmt::format("rolling stiffness '{}': expected ai2011 or tangential", name));
-}
-
-const char* to_string(RollingModel m) {
-  switch (m) {
-    case RollingModel::none: return "none";
-    case RollingModel::constant_torque: return "constant_torque";
-    case RollingModel::elastic_plastic: return "elastic_plastic";
+  if (normal_model == NormalModel::linear) {
+    if (!(normal_stiffness > 0.0) || !std::isfinite(normal_stiffness)) fail(where, "normal_stiffness", normal_stiffness, "a positive stiffness in N/m");
+    if (!(tangential_stiffness >= 0.0) || !std::isfinite(tangential_stiffness)) fail(where, "tangential_stiffness", tangential_stiffness, "a stiffness >= 0 in N/m");
+  } else {
+    validate_material(where);
   }
-  return "?";
+  if (!(restitution > 0.0 && restitution <= 1.0)) fail(where, "restitution", restitution, "a coefficient of restitution in (0, 1]");
+  if (!(static_friction >= 0.0)) fail(where, "static_friction", static_friction, "a friction coefficient >= 0");
+  if (!(kinetic_friction >= 0.0)) fail(where, "kinetic_friction", kinetic_friction, "a friction coefficient >= 0");
+  if (!(rolling_friction >= 0.0)) fail(where, "rolling_friction", rolling_friction, "a rolling friction coefficient >= 0");
+  if (!(rolling_damping >= 0.0)) fail(where, "rolling_damping", rolling_damping, "a damping ratio >= 0");
 }
-const char* to_string(RollingLeverArm a) {
-  return a == RollingLeverArm::average_radius ? "average_radius" : "effective_radius";
-}
-const char* to_string(RollingStiffness s) { return s == RollingStiffness::ai2011 ? "ai2011" : "tangential"; }
 
-ContactConstants make_constants(const ContactLaw& law) {
-  ContactConstants c;
-  c.kn = law.normal_stiffness;
-  c.kt = law.tangential_stiffness;
-  c.two_beta = 2.0 * law.damping_ratio();
-  c.mu_s = law.static_friction;
-  c.mu_k = law.kinetic_friction;
-  c.mu_r = law.rolling_friction;
-  c.rolling = law.rolling_friction > 0.0 ? static_cast<int>(law.rolling_model) : 0;
-  c.effective_lever_arm = law.lever_arm == RollingLeverArm::effective_radius;
-  c.rolling_stiffness_from_kt = law.rolling_stiffness == RollingStiffness::tangential;
-  c.eta_r = law.rolling_damping;
-  c.sqrt_kt_over_kn = std::sqrt(c.kt / c.kn);
-  c.needs_rolling_inertia = c.rolling == 2 && c.eta_r > 0.0;
-  c.needs_spin_inertia = c.rolling == 1;
-  return c;
+void ContactLaw::validate_material(const std::string& where) const {
+  if (!(youngs_modulus > 0.0) || !std::isfinite(youngs_modulus))
+    fail(where, "youngs_modulus", youngs_modulus, "a positive Young's modulus in Pa (the Hertz normal model needs it)");
+  if (!(poisson_ratio >= 0.0 && poisson_ratio < 0.5)) fail(where, "poisson_ratio", poisson_ratio, "a Poisson's ratio in [0, 0.5)");
+}
+
+template <class E>
+E parse_choice(std::string_view name) {
+  std::string names;
+  for (const auto& c : ChoiceTable<E>::values) {
+    if (name == c.name) return c.value;
+    names += names.empty() ? c.name : fmt::format(", {}", c.name);
+  }
+  throw InputError(fmt::format("{} '{}': expected one of {}", ChoiceTable<E>::what, name, names));
+}
+template NormalModel parse_choice<NormalModel>(std::string_view);
+template RollingModel parse_choice<RollingModel>(std::string_view);
+template RollingLeverArm parse_choice<RollingLeverArm>(std::string_view);
+template RollingStiffness parse_choice<RollingStiffness>(std::string_view);
+
+LawChoices law_choices(const ContactLaw& law) {
+  LawChoices c;
+  c.normal = law.normal_model;
+  c.rolling = law.rolling_friction > 0.0 ? law.rolling_model : RollingModel::none;
+  c.lever_arm = law.lever_arm;
+  c.rolling_stiffness = law.rolling_stiffness;
+  c.rolling_dashpot = c.rolling == RollingModel::elastic_plastic && law.rolling_damping > 0.0;
+  return c.canonical();
+}
+
+LawParams law_params(const ContactLaw& law, const ContactLaw& particle_law) {
+  LawParams p;
+  const double damping_scale = NormalModels::visit(law.normal_model, [&](auto model) {
+    using Model = decltype(model);
+    static_cast<typename Model::Params&>(p.normal) = Model::params(law, particle_law);
+    return Model::damping_scale;
+  });
+  p.damping.factor = 2.0 * damping_scale * law.damping_ratio();
+  p.tangential.mu_s = law.static_friction;
+  p.tangential.mu_k = law.kinetic_friction;
+  p.mu_r = law.rolling_friction;
+  p.eta_r = law.rolling_damping;
+  return p;
+}
+
+double contact_time_scale(const ContactLaw& law, const ContactLaw& particle_law, double mass, double radius) {
+  return NormalModels::visit(law.normal_model, [&](auto model) {
+    return decltype(model)::time_scale(law, particle_law, mass, radius);
+  });
+}
+
+double critical_time_step(const ContactLaw& particle_law, const std::vector<const ContactLaw*>& wall_laws, double mass,
+                          double radius) {
+  double t = contact_time_scale(particle_law, particle_law, mass, radius);
+  for (const ContactLaw* law : wall_laws) t = std::min(t, contact_time_scale(*law, particle_law, mass, radius));
+  return t;
+}
+
+std::string critical_time_step_formula(const ContactLaw& particle_law, const std::vector<const ContactLaw*>& wall_laws) {
+  bool linear = particle_law.normal_model == NormalModel::linear, hertz = !linear;
+  for (const ContactLaw* law : wall_laws) {
+    linear = linear || law->normal_model == NormalModel::linear;
+    hertz = hertz || law->normal_model == NormalModel::hertz;
+  }
+  if (linear && hertz) return "min(sqrt(m_min/k_max), the Rayleigh time T_R)";
+  return linear ? "sqrt(m_min/k_max)" : "the Rayleigh time T_R";
+}
+
+std::string describe_stiffness(const ContactLaw& law, const std::string& owner) {
+  if (law.normal_model == NormalModel::hertz)
+    return fmt::format("Young's modulus of the {} contact law ({:.4g} Pa)", owner, law.youngs_modulus);
+  return fmt::format("normal stiffness of the {} contact law ({:.4g} N/m)", owner, law.normal_stiffness);
 }
 
 }  // namespace trapdem

@@ -3,15 +3,17 @@
 // (neighbours, contacts, walls, integrate), threaded with OpenMP.
 #include <cstdint>
 #include <functional>
+#include <memory>
 #include <string>
 #include <vector>
 
 #include "dem/contact_law.hpp"
 #include "dem/domain.hpp"
-#include "dem/neighbor_list.hpp"
+#include "dem/history_archive.hpp"
+#include "dem/pair_list.hpp"
 #include "dem/particles.hpp"
 #include "dem/wall.hpp"
-#include "dem/contact_batch.hpp"
+#include "dem/wall_list.hpp"
 
 namespace trapdem {
 
@@ -32,19 +34,33 @@ struct SimulationStats {
   double rebuild_seconds = 0.0;  // s of wall-clock time in rebuilds, in this process (not checkpointed)
 };
 
+struct ContactSweep;    // the engine's contact workspace (contact_sweep.hpp)
+struct SecondHalfKick;  // integrator.hpp
+
 class Simulation {
  public:
   Simulation(Particles particles, const ContactLaw& particle_law, SimulationSettings settings);
+  Simulation(Simulation&&) noexcept;
+  Simulation& operator=(Simulation&&) noexcept;
+  ~Simulation();
 
   // Gravity (m/s^2) as a function of time; constant by default.
   void set_gravity(const Vec3& g);
   void set_gravity(std::function<Vec3(double)> g);
   Vec3 gravity() const;  // at the current time
 
+  // A wall's contact law is fixed when it is added (the engine keeps it in the form its loops
+  // read); its motion is changed through the calls below, never by reference.
   std::size_t add_wall(Wall wall);
-  Wall& wall(std::size_t k) { return walls_[k]; }
+  const Wall& wall(std::size_t k) const { return walls_.at(k); }
   const std::vector<Wall>& walls() const { return walls_; }
   std::size_t find_wall(const std::string& name) const;  // throws if absent
+  // Prescribed velocity (m/s) as a function of time (s); an empty function fixes the wall.
+  void set_wall_velocity(std::size_t k, std::function<Vec3(double)> velocity);
+  void set_wall_velocity(std::size_t k, const Vec3& velocity);  // constant
+  // A checkpoint's wall state: position, travel since the start, last load and velocity.
+  void restore_wall_state(std::size_t k, const Vec3& origin, const Vec3& displacement, const Vec3& force,
+                          const Vec3& torque, const Vec3& current_velocity);
 
   // Adds particles during a run (pluviation); the lists are rebuilt before the next step.
   void add_particle(std::int64_t id, const Vec3& x, double radius, double density, const Vec3& v = {});
@@ -64,9 +80,9 @@ class Simulation {
   std::int64_t step_count() const { return stats_.steps; }
   double time_step() const { return dt_; }
 
-  // sqrt(m_min / k_max), the characteristic period of the stiffest, lightest contact. The
-  // central-difference limit for one spring is 2 sqrt(m/k); DEM practice runs at 0.1-0.2 of
-  // sqrt(m/k) (Otsubo et al. 2017).
+  // s, the smallest contact time scale over the particles and the laws (the particle law's and
+  // the walls'), as the normal model defines it (trapdem::critical_time_step, contact_law.hpp):
+  // sqrt(m_min / k_max) for linear springs, the Rayleigh time for Hertz.
   double critical_time_step() const;
 
   // The engine's complete state beyond particles and walls, for checkpoints: with it, a resumed
@@ -95,10 +111,13 @@ class Simulation {
   void integrate_positions();
   void update_neighbours_if_needed();
   void rebuild_lists();
-  void contacts(bool kick);  // particle pairs and walls; with kick, the second half kick too
-  void collect_wall_contacts(std::uint32_t i, WallBatch& batch);
-  void wall_forces(WallBatch& batch, WallBatchLaw::Fn law, Vec3* load, double& max_overlap);
-  void check_stability() const;
+  // Particle pairs and walls, and with kick the second half kick (contact_sweep.cpp).
+  void contacts(bool kick);
+  void add_deferred_shares();
+  int kick_after_deferred_shares(const SecondHalfKick& second_half_kick, int threads);
+  std::int64_t first_non_finite_particle() const;
+  void sum_wall_loads(int threads);
+  void check_stability() const;  // diagnostics.cpp
   void invalidate_lists() { lists_valid_ = false; }
   void find_particles_near_walls();
   void find_partner_reach();
@@ -108,10 +127,9 @@ class Simulation {
 
   Particles p_;
   ContactLaw law_;
-  ContactConstants constants_;
   SimulationSettings settings_;
   std::vector<Wall> walls_;
-  WallLaws wall_laws_;  // per wall, its law's constants
+  std::unique_ptr<ContactSweep> sweep_;  // the laws as the loops read them, per-thread batches
   std::function<Vec3(double)> gravity_;
   Vec3 constant_gravity_;
   bool gravity_is_constant_ = true;
@@ -121,19 +139,8 @@ class Simulation {
   HistoryArchive pending_history_;            // archived before particles were removed
   bool history_pending_ = false;
 
- public:
-  struct PartnerShare {  // a pair's share for a partner in a later thread's block
-    std::uint32_t particle;
-    Vec3 force, torque;
-  };
-
- private:
-  std::vector<std::vector<PartnerShare>> deferred_;  // per thread: shares for later threads' particles
-  std::vector<ContactBatch> batches_;                 // one per thread
-  std::vector<WallBatch> wall_batches_;               // one per thread
   std::vector<std::uint32_t> particles_near_walls_;  // ascending
   std::vector<std::uint32_t> partner_reach_;         // per owner: one past the highest partner of those below
-  std::vector<Vec3> wall_loads_;                     // per thread and wall: force, torque
   // The touching pairs' contact histories, compact (most listed pairs do not touch):
   // pair_contact_[k] is pair k's index into contacts_, or kNoContact. Each step writes them anew,
   // in pair order, into contacts_next_ and swaps: a thread's block writes from index first[begin]

@@ -12,23 +12,43 @@ namespace trapdem {
 
 namespace {
 
-// A contact law's keys, with defaults taken from `base` (the particle law for the walls).
+// A contact law's keys, with defaults taken from `base` (the particle law for the walls). The
+// normal model's own keys: normal_stiffness and tangential_stiffness for "linear"; for "hertz",
+// youngs_modulus (required unless inherited) and poisson_ratio. A stiffness key under "hertz" is
+// an error (it would be ignored); youngs_modulus and poisson_ratio describe the body's material
+// and are accepted with either (a Hertz wall reads the particles' material from [contact]).
 ContactLaw read_contact_law(Config table, const ContactLaw& base) {
   ContactLaw law;
-  law.normal_stiffness = table.get_double("normal_stiffness", base.normal_stiffness, "N/m", Range::positive());
-  const double kt_default = table.has("normal_stiffness") ? 0.5 * law.normal_stiffness : base.tangential_stiffness;
-  law.tangential_stiffness = table.get_double("tangential_stiffness", kt_default, "N/m", Range::non_negative());
+  law.normal_model = parse_choice<NormalModel>(
+      table.get_choice("normal_model", to_string(base.normal_model), choice_names<NormalModel>()));
+  const bool hertz = law.normal_model == NormalModel::hertz;
+  if (hertz) {
+    for (const char* key : {"normal_stiffness", "tangential_stiffness"})
+      if (table.has(key))
+        throw table.error(key, "no stiffness with normal_model = \"hertz\" (its stiffness follows from youngs_modulus "
+                               "and poisson_ratio); remove the key or set normal_model = \"linear\"");
+    law.normal_stiffness = base.normal_stiffness;
+    law.tangential_stiffness = base.tangential_stiffness;
+  } else {
+    law.normal_stiffness = table.get_double("normal_stiffness", base.normal_stiffness, "N/m", Range::positive());
+    const double kt_default = table.has("normal_stiffness") ? 0.5 * law.normal_stiffness : base.tangential_stiffness;
+    law.tangential_stiffness = table.get_double("tangential_stiffness", kt_default, "N/m", Range::non_negative());
+  }
+  law.youngs_modulus = hertz && !(base.youngs_modulus > 0.0)
+                           ? table.require_double("youngs_modulus", "Pa", Range::positive())
+                           : table.get_double("youngs_modulus", base.youngs_modulus, "Pa", Range::positive());
+  law.poisson_ratio = table.get_double("poisson_ratio", base.poisson_ratio, "", Range{0.0, 0.5, true, false});
   law.restitution = table.get_double("restitution", base.restitution, "", Range::unit_open_closed());
   law.static_friction = table.get_double("static_friction", base.static_friction, "", Range::non_negative());
   const double mu_k_default = table.has("static_friction") ? law.static_friction : base.kinetic_friction;
   law.kinetic_friction = table.get_double("kinetic_friction", mu_k_default, "", Range::non_negative());
   law.rolling_friction = table.get_double("rolling_friction", base.rolling_friction, "", Range::non_negative());
-  law.rolling_model = parse_rolling_model(table.get_choice("rolling_model", to_string(base.rolling_model),
-                                                           {"none", "constant_torque", "elastic_plastic"}));
-  law.lever_arm = parse_lever_arm(
-      table.get_choice("lever_arm", to_string(base.lever_arm), {"average_radius", "effective_radius"}));
-  law.rolling_stiffness = parse_rolling_stiffness(
-      table.get_choice("rolling_stiffness", to_string(base.rolling_stiffness), {"ai2011", "tangential"}));
+  law.rolling_model = parse_choice<RollingModel>(
+      table.get_choice("rolling_model", to_string(base.rolling_model), choice_names<RollingModel>()));
+  law.lever_arm = parse_choice<RollingLeverArm>(
+      table.get_choice("lever_arm", to_string(base.lever_arm), choice_names<RollingLeverArm>()));
+  law.rolling_stiffness = parse_choice<RollingStiffness>(
+      table.get_choice("rolling_stiffness", to_string(base.rolling_stiffness), choice_names<RollingStiffness>()));
   law.rolling_damping = table.get_double("rolling_damping", base.rolling_damping, "", Range::non_negative());
   return law;
 }
@@ -102,11 +122,17 @@ ExperimentConfig ExperimentConfig::from(Config& c) {
     throw particles.error(size_key, fmt::format("particles at most a third of the box depth ({} m)", e.box.depth));
   }
 
-  e.material.particle = read_contact_law(c.get_table("contact"), ContactLaw{});
+  Config contact = c.get_table("contact");
+  e.material.particle = read_contact_law(contact, ContactLaw{});
   Config walls = c.get_table("walls");
   e.material.base = read_contact_law(walls.get_table("base"), e.material.particle);
   e.material.front = read_contact_law(walls.get_table("front"), e.material.base);
   e.material.back = read_contact_law(walls.get_table("back"), e.material.base);
+  for (const ContactLaw* law : e.material.wall_laws()) {
+    // A Hertz wall contact combines the wall's material with the particles'.
+    if (law->normal_model == NormalModel::hertz && !(e.material.particle.youngs_modulus > 0.0))
+      throw contact.error("youngs_modulus", "the particles' Young's modulus in Pa: a wall has normal_model = \"hertz\"");
+  }
 
   Config pour = c.get_table("pluviation");
   e.pluviation.count = pour.get_int("count", 0, Range::non_negative());
@@ -150,7 +176,8 @@ ExperimentConfig ExperimentConfig::from(Config& c) {
       num.get_double("max_overlap_fraction", e.numerics.max_overlap_fraction, "", Range::open_closed(0.0, 1.0));
   e.numerics.threads = static_cast<int>(num.get_int("threads", 0, Range::non_negative()));
   if (e.numerics.time_step > e.critical_time_step())
-    throw num.error("time_step", fmt::format("a step at most the critical step sqrt(m_min/k_max) = {:.4g} s",
+    throw num.error("time_step", fmt::format("a step at most the critical step {} = {:.4g} s",
+                                             critical_time_step_formula(e.material.particle, e.material.wall_laws()),
                                              e.critical_time_step()));
 
   Config out = c.get_table("output");
@@ -182,12 +209,12 @@ ExperimentConfig ExperimentConfig::specimen_from(Config& c) {
   return e;
 }
 
+std::vector<const ContactLaw*> MaterialConfig::wall_laws() const { return {&base, &front, &back}; }
+
 double ExperimentConfig::critical_time_step() const {
   const double r = 0.5 * material.sizes.min_diameter();
   const double m_min = material.density * 4.0 / 3.0 * std::numbers::pi * r * r * r;
-  const double k_max = std::max({material.particle.normal_stiffness, material.base.normal_stiffness,
-                                 material.front.normal_stiffness, material.back.normal_stiffness});
-  return std::sqrt(m_min / k_max);
+  return trapdem::critical_time_step(material.particle, material.wall_laws(), m_min, r);
 }
 
 double ExperimentConfig::time_step() const {

@@ -34,6 +34,8 @@ struct MaterialConfig {
   ContactLaw base;             // particle against the base, trapdoor, cavity and side walls
   ContactLaw front;            // particle against the front window (glass)
   ContactLaw back;             // particle against the back plate (aluminium)
+
+  std::vector<const ContactLaw*> wall_laws() const;  // base, front, back
 };
 
 struct PluviationConfig {
@@ -58,7 +60,7 @@ struct SpinUpConfig {
 
 struct NumericsConfig {
   double time_step = 0.0;            // s (0: time_step_fraction of the critical step)
-  double time_step_fraction = 0.2;   // of sqrt(m_min / k_max)
+  double time_step_fraction = 0.2;   // of the critical step
   double skin_fraction = 0.2;        // Verlet skin, fraction of the largest diameter
   double max_overlap_fraction = 0.25;
   int threads = 0;                   // 0: all cores
@@ -96,7 +98,9 @@ struct ExperimentConfig {
   // another code gives them (--config FILE with [box] and [trapdoor]).
   static ExperimentConfig specimen_from(Config& config);
 
-  double critical_time_step() const;  // s, sqrt(m_min / k_max)
+  // s, trapdem::critical_time_step for the smallest particle (sqrt(m_min / k_max) for linear
+  // springs, the Rayleigh time for Hertz): the one the engine computes.
+  double critical_time_step() const;
   double time_step() const;           // s
   double skin() const;                // m
   std::int64_t expected_particle_count() const;

@@ -73,13 +73,10 @@ void TrapdoorExperiment::install_gravity() {
     case Stage::lowering:
     case Stage::done: sim_->set_gravity(Vec3{0, 0, -gn}); break;
   }
-  Wall& door = sim_->wall(trapdoor_wall_);
-  if (stage_ == Stage::lowering) {
-    const double rate = config_.trapdoor.rate;
-    door.velocity = [rate](double) { return Vec3{0, 0, -rate}; };
-  } else {
-    door.velocity = nullptr;
-  }
+  if (stage_ == Stage::lowering)
+    sim_->set_wall_velocity(trapdoor_wall_, Vec3{0, 0, -config_.trapdoor.rate});
+  else
+    sim_->set_wall_velocity(trapdoor_wall_, nullptr);
 }
 
 void TrapdoorExperiment::start_stage(Stage stage) {

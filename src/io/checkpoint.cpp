@@ -221,14 +221,9 @@ void restore_checkpoint(Simulation& simulation, Checkpoint c) {
   // next step rebuilds. Assigning the particles afterwards (particles_mutable) leaves them invalid.
   const bool lists_match = c.lists.position_at_build.size() == n && c.lists.pairs.first.size() == n + 1;
 
-  for (std::size_t k = 0; k < walls.size(); ++k) {
-    Wall& w = simulation.wall(k);
-    w.origin = c.walls[k].origin;
-    w.displacement = c.walls[k].displacement;
-    w.force = c.walls[k].force;
-    w.torque = c.walls[k].torque;
-    w.current_velocity = c.walls[k].current_velocity;
-  }
+  for (std::size_t k = 0; k < walls.size(); ++k)
+    simulation.restore_wall_state(k, c.walls[k].origin, c.walls[k].displacement, c.walls[k].force, c.walls[k].torque,
+                                  c.walls[k].current_velocity);
   // A checkpoint of a simulation that never stepped: the fresh one is already in that state, with
   // its set-up (initial forces) still to come.
   if (c.stats.steps == 0 && c.stats.rebuilds == 0) {

@@ -1,6 +1,7 @@
 // Conservation laws: energy of an elastic frictionless gas, and Newton's third law / linear
 // momentum of a dense random packing (periodic, and in a box of walls).
 #include <gtest/gtest.h>
+#include <omp.h>
 
 #include <cmath>
 
@@ -80,13 +81,32 @@ double momentum_scale(const Particles& p) {
 
 }  // namespace
 
+// Each test at the default thread count and at 3 threads: a block split with several threads,
+// partner shares deferred across blocks, every particle kicked either in the sweep or after it.
+class Conservation : public ::testing::TestWithParam<int> {
+ protected:
+  void SetUp() override {
+    threads_before_ = omp_get_max_threads();
+    if (GetParam() > 0) omp_set_num_threads(GetParam());
+  }
+  void TearDown() override { omp_set_num_threads(threads_before_); }
+
+ private:
+  int threads_before_ = 1;
+};
+
+INSTANTIATE_TEST_SUITE_P(Threads, Conservation, ::testing::Values(0, 3),
+                         [](const ::testing::TestParamInfo<int>& info) {
+                           return info.param == 0 ? std::string("DefaultThreads") : std::to_string(info.param) + "Threads";
+                         });
+
 // 64 spheres (r = 1 mm, 6.5 % solids) at ~1 m/s in a periodic box, e = 1, no friction, no gravity:
 // about 100 collisions in 10 ms. Velocity Verlet is symplectic for the springs; what it does not
 // conserve is the energy of each contact's onset and end falling inside a step, a random error
 // bounded by (w dt)^2 and measured at ~1e-6 of the pair's energy per collision at this dt
 // (collision_test). The tolerance 1e-4 relative allows ~100 such errors with margin; a dashpot left on (e = 0.99) would
 // lose ~1 % per collision, and a wrong sign or a missing half kick drifts by far more.
-TEST(Conservation, ElasticFrictionlessGasConservesEnergy) {
+TEST_P(Conservation, ElasticFrictionlessGasConservesEnergy) {
   ContactLaw law = frictionless_law(1.0e4, 1.0);
   SimulationSettings s;
   s.domain = periodic_box(0.016);
@@ -126,7 +146,7 @@ TEST(Conservation, ElasticFrictionlessGasConservesEnergy) {
 // hundred terms errs by ~1e-15 of it). Momentum
 // is then constant to round-off over 2000 steps, tolerance 1e-12 of sum m|v|. A force applied to
 // one body only, or a partner share gathered twice, breaks both by O(1).
-TEST(Conservation, DensePackingObeysNewtonsThirdLaw) {
+TEST_P(Conservation, DensePackingObeysNewtonsThirdLaw) {
   ContactLaw law = frictionless_law(1.0e4, 0.5);
   law.static_friction = 0.4;
   law.kinetic_friction = 0.3;
@@ -159,7 +179,7 @@ TEST(Conservation, DensePackingObeysNewtonsThirdLaw) {
 // The same in a box of walls: the walls' loads are the reactions, so the contact forces on the
 // particles plus the loads on the walls sum to zero (round-off). Checks the sign convention of
 // Wall::force (load ON the wall) and that every wall contact is counted once.
-TEST(Conservation, WallLoadsBalanceForcesOnParticles) {
+TEST_P(Conservation, WallLoadsBalanceForcesOnParticles) {
   ContactLaw law = frictionless_law(1.0e4, 0.5);
   law.static_friction = 0.4;
   law.kinetic_friction = 0.3;

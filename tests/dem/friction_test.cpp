@@ -5,7 +5,7 @@
 
 #include <cmath>
 
-#include "dem/contact_kernel.hpp"
+#include "dem/contact/law.hpp"
 #include "dem/simulation.hpp"
 #include "test_support.hpp"
 
@@ -118,7 +118,7 @@ TEST(Friction, KineticAboveStaticOnIncline) {
 }
 
 // ---------------------------------------------------------------------------------------------
-// The kernel's rule (contact_kernel.hpp): stick while |F_t trial| <= mu_s |F_n|; beyond it slide,
+// The kernel's rule (contact/tangential_coulomb.hpp): stick while |F_t trial| <= mu_s |F_n|; beyond it slide,
 // with the force cut back to mu_k |F_n| if it exceeds that (never raised to it); stick again once
 // the trial force is inside the kinetic cone. Checked with mu_s = 0.18, mu_k = 0.5 on one call at
 // a time. No damping (e = 1), so every expected force
@@ -126,30 +126,36 @@ TEST(Friction, KineticAboveStaticOnIncline) {
 namespace {
 
 struct KernelSetup {
-  ContactConstants c;
+  LawParams c;
   ContactBodies b;
   Vec3 n{0, 0, 1};
   double overlap = 1e-6;  // m -> F_n = k_n overlap = 0.01 N
   double dt = 1e-6;       // s
-  double fn() const { return c.kn * overlap; }
+  const NormalLinear::Params& spring() const { return c.normal; }
+  double fn() const { return spring().kn * overlap; }
 
   KernelSetup(double restitution = 1.0) {
     ContactLaw law = frictionless_law(1.0e4, restitution);
     law.static_friction = 0.18;
     law.kinetic_friction = 0.5;
-    c = make_constants(law);
+    set(law);
     const double m = sphere_mass(kRadius, kDensity);
-    b = {m, kRadius, 0.0, kRadius, 1.4 * m * kRadius * kRadius, 0.4 * m * kRadius * kRadius};
+    b = {.effective_mass = m, .effective_radius = kRadius, .arm_i = kRadius, .arm_j = 0.0, .lever = kRadius,
+         .rolling_inertia = 1.4 * m * kRadius * kRadius, .spin_inertia = 0.4 * m * kRadius * kRadius};
+  }
+  void set(const ContactLaw& law) {
+    ASSERT_TRUE(law_choices(law) == LawChoices{});  // the law evaluated below: linear, no rolling resistance
+    c = law_params(law, law);
   }
   // History whose spring alone gives a tangential force of `ratio` |F_n| along -x.
   ContactHistory history(double ratio, bool sliding) const {
     ContactHistory h;
-    h.tangential_spring = {ratio * fn() / c.kt, 0, 0};
+    h.tangential_spring = {ratio * fn() / spring().kt, 0, 0};
     h.flags = ContactHistory::kTouching | (sliding ? ContactHistory::kSliding : 0u);
     return h;
   }
   ContactForce call(ContactHistory& h, const Vec3& v_rel) const {
-    return contact_force(c, b, n, overlap, v_rel, {}, {}, h, dt);
+    return ContactEvaluator<LawChoices{}>::evaluate(c, b, n, overlap, v_rel, {}, {}, h, dt);
   }
 };
 
@@ -167,11 +173,11 @@ TEST(FrictionKernel, SticksBelowStaticLimit) {
   EXPECT_TRUE(h.touching());
   // Sticking with the contact moving: the spring grows by v_t dt.
   ContactHistory h2 = k.history(0.10, false);
-  const double vt = 0.05 * k.fn() / (k.c.kt * k.dt);  // adds 0.05 |F_n| to the trial force
+  const double vt = 0.05 * k.fn() / (k.spring().kt * k.dt);  // adds 0.05 |F_n| to the trial force
   const ContactForce f2 = k.call(h2, {vt, 0, 0});
   EXPECT_NEAR(f2.tangential.x, -0.15 * k.fn(), kRel * k.fn());
   EXPECT_FALSE(h2.sliding());
-  EXPECT_NEAR(h2.tangential_spring.x, 0.15 * k.fn() / k.c.kt, kRel * k.fn() / k.c.kt);
+  EXPECT_NEAR(h2.tangential_spring.x, 0.15 * k.fn() / k.spring().kt, kRel * k.fn() / k.spring().kt);
 }
 
 TEST(FrictionKernel, YieldsAboveStaticLimitWithoutRaisingTheForce) {
@@ -183,15 +189,15 @@ TEST(FrictionKernel, YieldsAboveStaticLimitWithoutRaisingTheForce) {
   EXPECT_TRUE(h.sliding());
   EXPECT_NEAR(f.tangential.x, -0.19 * k.fn(), kRel * k.fn());
   EXPECT_NEAR(std::fabs(f.tangential.y) + std::fabs(f.tangential.z), 0.0, kRel * k.fn());
-  EXPECT_NEAR(h.tangential_spring.x, 0.19 * k.fn() / k.c.kt, kRel * k.fn() / k.c.kt);
+  EXPECT_NEAR(h.tangential_spring.x, 0.19 * k.fn() / k.spring().kt, kRel * k.fn() / k.spring().kt);
 
   // Driven on past the kinetic cone: the force is cut back to mu_k |F_n| and the spring set to
   // carry exactly that, so F_t is continuous if it sticks next.
-  const double vt = 0.4 * k.fn() / (k.c.kt * k.dt);  // trial 0.59 |F_n|
+  const double vt = 0.4 * k.fn() / (k.spring().kt * k.dt);  // trial 0.59 |F_n|
   const ContactForce f2 = k.call(h, {vt, 0, 0});
   EXPECT_TRUE(h.sliding());
   EXPECT_NEAR(f2.tangential.x, -0.5 * k.fn(), kRel * k.fn());
-  EXPECT_NEAR(h.tangential_spring.x, 0.5 * k.fn() / k.c.kt, kRel * k.fn() / k.c.kt);
+  EXPECT_NEAR(h.tangential_spring.x, 0.5 * k.fn() / k.spring().kt, kRel * k.fn() / k.spring().kt);
 }
 
 // mu_k < mu_s, the usual case: a yielding contact drops from the static to the kinetic force.
@@ -200,7 +206,7 @@ TEST(FrictionKernel, YieldingDropsToKineticForceWhenKineticIsLower) {
   ContactLaw law = frictionless_law(1.0e4, 1.0);
   law.static_friction = 0.5;
   law.kinetic_friction = 0.3;
-  k.c = make_constants(law);
+  k.set(law);
   ContactHistory h = k.history(0.52, false);
   const ContactForce f = k.call(h, {});
   EXPECT_TRUE(h.sliding());
@@ -212,7 +218,7 @@ TEST(FrictionKernel, SticksAgainWhenTrialFallsInsideKineticCone) {
   ContactHistory h = k.history(0.5, true);  // sliding, spring at the kinetic limit
   // The contact reverses: the trial force drops to 0.4 |F_n|, inside the kinetic cone: it sticks
   // with the trial force.
-  const double vt = -0.1 * k.fn() / (k.c.kt * k.dt);
+  const double vt = -0.1 * k.fn() / (k.spring().kt * k.dt);
   const ContactForce f = k.call(h, {vt, 0, 0});
   EXPECT_FALSE(h.sliding());
   EXPECT_NEAR(f.tangential.x, -0.4 * k.fn(), kRel * k.fn());

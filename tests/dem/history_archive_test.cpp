@@ -10,7 +10,7 @@
 #include <numeric>
 #include <string>
 
-#include "dem/neighbor_list.hpp"
+#include "dem/history_archive.hpp"
 #include "test_support.hpp"
 
 using namespace trapdem;

@@ -8,7 +8,8 @@
 #include <string>
 #include <utility>
 
-#include "dem/neighbor_list.hpp"
+#include "dem/cell_sort.hpp"
+#include "dem/pair_list.hpp"
 #include "test_support.hpp"
 
 using namespace trapdem;

@@ -140,12 +140,12 @@ TEST(Rolling, ElasticPlasticRollsAwayAboveRollingLimit) {
 }
 
 // Walls whose laws make different choices (here a ceiling without rolling resistance beside an
-// EPSD or constant-torque floor) send every wall contact through the law with run-time choices
-// instead of the vectorised one compiled for a single choice (src/dem/contact_batch.hpp). Both are
-// the same law: the sphere on the floor must end where it ends without the ceiling. Tolerance
-// 1e-9 relative: the two loops may contract multiply-adds differently (round-off, ~1e-16 per
-// step), amplified over the run; a law that read another wall's constants or choices would
-// differ at the first per cent.
+// EPSD or constant-torque floor) run the wall batch in stretches of equal choices, each through
+// the loop compiled for its choices (src/dem/wall_sweep.cpp), instead of the whole batch through
+// one. The sphere on the floor must end where it ends without the ceiling. Tolerance 1e-9
+// relative: the vectorised loop and its scalar remainder may contract multiply-adds differently
+// (round-off, ~1e-16 per step), amplified over the run; a law that read another wall's parameters
+// or choices would differ at the first per cent.
 TEST(Rolling, WallsOfOtherRollingModelsLeaveTheFloorContactUnchanged) {
   for (const RollingModel model : {RollingModel::constant_torque, RollingModel::elastic_plastic}) {
     const ContactLaw law = rolling_law(model, 0.2);

@@ -4,6 +4,8 @@
 #include <cstdint>
 #include <cstdlib>
 #include <numbers>
+#include <utility>
+#include <vector>
 
 #include <fmt/format.h>
 
@@ -41,6 +43,21 @@ inline ContactLaw frictionless_law(double kn, double restitution) {
   law.rolling_friction = 0.0;
   law.rolling_model = RollingModel::none;
   return law;
+}
+
+// Brute-force O(N^2) reference for the pair list: every pair (i < j) closer than r_i + r_j + skin
+// (minimum image on periodic axes).
+inline std::vector<std::pair<std::uint32_t, std::uint32_t>> brute_force_pairs(const Particles& p, const Domain& domain,
+                                                                              double skin) {
+  std::vector<std::pair<std::uint32_t, std::uint32_t>> pairs;
+  for (std::uint32_t i = 0; i < p.size(); ++i) {
+    for (std::uint32_t j = i + 1; j < p.size(); ++j) {
+      const Vec3 d = domain.minimum_image(p.position[i] - p.position[j]);
+      const double reach = p.radius[i] + p.radius[j] + skin;
+      if (norm2(d) < reach * reach) pairs.emplace_back(i, j);
+    }
+  }
+  return pairs;
 }
 
 // Deterministic pseudo-random numbers (splitmix64) so that tests do not depend on a library's

@@ -52,7 +52,9 @@ TEST(WallSeam, SphereNearSeamFeelsOneContact) {
 // touching only that edge must be pushed away from it along the edge normal.
 TEST(WallSeam, ConvexEdgeStillActs) {
   Simulation sim = sphere_on_seam(0.0);
-  sim.wall(1).origin.z = -0.004;  // trapdoor lowered 4 mm
+  Vec3 lowered = sim.wall(1).origin;
+  lowered.z -= 0.004;  // trapdoor lowered 4 mm
+  sim.restore_wall_state(1, lowered, {0, 0, -0.004}, {}, {}, {});
   auto& p = sim.particles_mutable();
   p.position[0] = {0.0007, 0.0, 0.0007};  // 0.99 mm from the edge at (0, 0): overlap 0.01 mm
   sim.set_gravity(Vec3{0, 0, 0});

@@ -1,20 +1,10 @@
-#include "dem/neighbor_list.hpp"
-
-#include <omp.h>
+#include "dem/history_archive.hpp"
 
 #include <algorithm>
 #include <numeric>
-
-#include <fmt/format.h>
-
-#include "core/errors.hpp"
+#include <utility>
 
 namespace trapdem {
-
-std::uint32_t PairList::owner_of(std::size_t pair) const {
-  auto it = std::upper_bound(first.begin(), first.end(), static_cast<std::uint32_t>(pair));
-  return static_cast<std::uint32_t>(it - first.begin() - 1);
-}
 
 namespace {
 ContactHistory flipped(ContactHistory h) {
@@ -143,111 +133,6 @@ void HistoryArchive::restore_walls(WallList& list, const std::vector<std::int64_
       if (it != walls.end() && it->particle == key.particle && it->wall == key.wall) list.history[k] = it->history;
     }
   }
-}
-
-CellSort sort_into_cells(const std::vector<Vec3>& positions, const Domain& domain, double cell_size) {
-  CellSort s;
-  const std::size_t n = positions.size();
-  s.grid = CellGrid::covering(positions, domain, cell_size, 4 * n + 64);
-  s.cell_of.resize(n);
-  for (std::size_t i = 0; i < n; ++i) s.cell_of[i] = s.grid.index(positions[i]);
-  // Counting sort: stable, so the order within a cell follows the current index order.
-  s.cell_start.assign(s.grid.total() + 1, 0);
-  for (std::uint32_t c : s.cell_of) ++s.cell_start[c + 1];
-  std::partial_sum(s.cell_start.begin(), s.cell_start.end(), s.cell_start.begin());
-  s.order.resize(n);
-  std::vector<std::uint32_t> fill(s.cell_start.begin(), s.cell_start.end() - 1);
-  for (std::size_t i = 0; i < n; ++i) s.order[fill[s.cell_of[i]]++] = static_cast<std::uint32_t>(i);
-  return s;
-}
-
-void build_pairs(const Particles& p, const CellSort& cells, const Domain& domain, double skin, PairList& out) {
-  const std::size_t n = p.size();
-  const bool periodic = domain.any_periodic();
-  // In cell order (the engine re-orders the particles at every rebuild by default) a cell of lower
-  // index holds lower particle indices only: a half list's partners j > i are then in the
-  // particle's own cell and the higher cells of its stencil, half the cells to search.
-  const bool in_cell_order = std::is_sorted(cells.cell_of.begin(), cells.cell_of.end());
-  out.first.assign(n + 1, 0);
-  std::vector<std::vector<std::uint32_t>> found(static_cast<std::size_t>(omp_get_max_threads()));
-  // One pass: each thread lists the partners of a contiguous block of particles, then copies them
-  // into place; the list is the same for any thread count.
-#pragma omp parallel
-  {
-    const std::size_t team = static_cast<std::size_t>(omp_get_num_threads());
-    const std::size_t me = static_cast<std::size_t>(omp_get_thread_num());
-    const std::size_t begin = n * me / team, end = n * (me + 1) / team;
-    std::vector<std::uint32_t>& mine = found[me];
-    mine.clear();
-    std::array<std::uint32_t, 27> stencil;
-    int stencil_size = 0;
-    std::uint32_t stencil_of = ~0u;
-    for (std::size_t i = begin; i < end; ++i) {
-      const std::uint32_t cell = cells.cell_of[i];
-      if (cell != stencil_of) {
-        stencil_size = cells.grid.neighbours(cell, stencil);
-        if (in_cell_order)
-          stencil_size = int(std::remove_if(stencil.begin(), stencil.begin() + stencil_size,
-                                            [cell](std::uint32_t c) { return c < cell; }) -
-                             stencil.begin());
-        stencil_of = cell;
-      }
-      const std::size_t before = mine.size();
-      const Vec3 xi = p.position[i];
-      const double ri = p.radius[i] + skin;
-      for (int c = 0; c < stencil_size; ++c) {
-        for (std::uint32_t s = cells.cell_start[stencil[c]]; s < cells.cell_start[stencil[c] + 1]; ++s) {
-          const std::uint32_t j = cells.order[s];
-          if (j <= i) continue;
-          Vec3 d = xi - p.position[j];
-          if (periodic) d = domain.minimum_image(d);
-          const double reach = ri + p.radius[j];
-          if (norm2(d) < reach * reach) mine.push_back(j);
-        }
-      }
-      std::sort(mine.begin() + std::ptrdiff_t(before), mine.end());
-      out.first[i + 1] = static_cast<std::uint32_t>(mine.size() - before);
-    }
-#pragma omp barrier
-#pragma omp single
-    {
-      std::partial_sum(out.first.begin(), out.first.end(), out.first.begin());
-      out.partner.resize(out.first[n]);
-    }
-    std::copy(mine.begin(), mine.end(), out.partner.begin() + out.first[begin]);
-  }
-  out.history.clear();
-}
-
-void build_wall_candidates(const Particles& p, const std::vector<Wall>& walls, double skin, WallList& out) {
-  const std::size_t n = p.size();
-  out.first.assign(n + 1, 0);
-  out.wall.clear();
-  for (std::size_t i = 0; i < n; ++i) {
-    for (std::uint32_t w = 0; w < walls.size(); ++w) {
-      const WallProximity near = wall_proximity(walls[w], p.position[i]);
-      if (near.distance < p.radius[i] + skin) out.wall.push_back(w);
-    }
-    out.first[i + 1] = static_cast<std::uint32_t>(out.wall.size());
-    if (out.first[i + 1] - out.first[i] > kMaxWallCandidates)
-      throw InputError(fmt::format("particle id {} is within reach of {} walls; at most {} are supported", p.id[i],
-                                   out.first[i + 1] - out.first[i], kMaxWallCandidates));
-  }
-  out.history.assign(out.wall.size(), ContactHistory{});
-  out.force.assign(out.wall.size(), Vec3{});
-}
-
-std::vector<std::pair<std::uint32_t, std::uint32_t>> brute_force_pairs(const Particles& p, const Domain& domain,
-                                                                       double skin) {
-  std::vector<std::pair<std::uint32_t, std::uint32_t>> pairs;
-  for (std::uint32_t i = 0; i < p.size(); ++i) {
-    for (std::uint32_t j = i + 1; j < p.size(); ++j) {
-      const Vec3 d = domain.minimum_image(p.position[i] - p.position[j]);
-      const double reach = p.radius[i] + p.radius[j] + skin;
-      if (norm2(d) < reach * reach) pairs.emplace_back(i, j);
-    }
-  }
-  return pairs;
 }
 
 }  // namespace trapdem

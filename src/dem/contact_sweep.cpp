@@ -1,0 +1,250 @@
+#include "dem/contact_sweep.hpp"
+
+#include <omp.h>
+
+#include <algorithm>
+
+#include "dem/integrator.hpp"
+#include "dem/pair_list.hpp"
+#include "dem/simulation.hpp"
+#include "dem/thread_block.hpp"
+
+namespace trapdem {
+
+namespace {
+
+// What every thread's sweep reads and writes, gathered once per step.
+struct SweepInputs {
+  Particles& p;
+  const Domain& domain;
+  bool periodic;
+  double dt;
+  PairSweepLists lists;
+  const ContactHistory* history;       // last step's compact histories
+  ContactHistory* next_history;        // this step's
+  const std::uint32_t* first;          // the pair list's
+  PairBatchLawFn pair_law;
+  const LawParams& pair_params;
+  const std::vector<Wall>& walls;
+  WallList& wall_list;
+  const WallLaws& wall_laws;
+  const std::uint32_t* near_walls;     // the particles with walls within reach, ascending
+  const std::uint32_t* near_walls_end;
+  const std::uint32_t* partner_reach;  // per owner: one past the highest partner of those below
+  const SecondHalfKick& second_half_kick;
+  bool kick;
+};
+
+// One thread's sweep over its block of particles, contact-major: batch by batch, the touching
+// pairs, the law over them, their shares; each particle's walls as soon as its pairs are all
+// done; each particle's second half kick as soon as its force is complete.
+class BlockSweep {
+ public:
+  BlockSweep(const SweepInputs& in, ThreadBlock block, ContactBatch& batch, WallBatch& wall_batch,
+             std::vector<PartnerShare>& later, Vec3* wall_loads)
+      : in_(in), block_(block), batch_(batch), wall_batch_(wall_batch), later_(later), wall_loads_(wall_loads) {}
+
+  // Returns 1 when a kicked particle's state is not finite; raises max_overlap to the largest
+  // overlap / smaller radius seen.
+  int run(double& max_overlap) {
+    max_overlap_ = max_overlap;
+    start();
+    sweep_pairs();
+    finish();
+    max_overlap = max_overlap_;
+    return any_bad_;
+  }
+
+ private:
+  // Empty shares, forces and batches; the cursors at the block's start.
+  void start() {
+    const auto [begin, end] = block_;
+    later_.clear();
+    for (std::size_t i = begin; i < end; ++i) {
+      in_.p.force[i] = Vec3{};
+      in_.p.torque[i] = Vec3{};
+    }
+    wall_batch_.count = 0;
+    next_near_wall_ = std::lower_bound(in_.near_walls, in_.near_walls_end, std::uint32_t(begin));
+    // The particles below the highest partner of the earlier blocks' owners get a share after
+    // the sweep: they are kicked then (Simulation::contacts).
+    next_kick_ = in_.kick ? std::min(end, std::max<std::size_t>(begin, in_.partner_reach[begin])) : end;
+  }
+
+  // Batch by batch: the touching pairs, the law over them, their shares. The owner's shares are
+  // summed and added once its last pair is done (a batch may end within an owner's pairs): the
+  // same order of additions as a loop over the pairs owner by owner.
+  void sweep_pairs() {
+    const auto [begin, end] = block_;
+    Particles& p = in_.p;
+    const SweepPrefetch ahead_of{p.velocity.data(), p.angular_velocity.data(), p.force.data(),
+                                 p.torque.data(),   in_.history,             in_.next_history};
+    const BodyArrays bodies{p.radius.data(), p.mass.data(), p.inv_inertia.data(), p.velocity.data(),
+                            p.angular_velocity.data()};
+    PairCursor at{begin, 0};
+    std::uint32_t next_contact = in_.first[begin];  // this block's part of next_history
+    sums_ = {begin, Vec3{}, Vec3{}};
+    while (at.owner < end) {
+      const std::uint32_t count = collect_touching(at, end, p.position.data(), p.radius.data(), in_.lists, next_contact,
+                                                   in_.domain, in_.periodic, batch_, ahead_of, p.size());
+      in_.pair_law(batch_, count, in_.pair_params, bodies, in_.history, in_.dt);
+      add_batch_shares(batch_, count, end, p.force.data(), p.torque.data(), in_.next_history, sums_, later_,
+                       max_overlap_);
+      walls_before(sums_.owner);  // the particles before the current owner have all their pair shares
+      kick_before(wall_batch_.count > 0 ? std::min<std::size_t>(sums_.owner, wall_batch_.particle[0]) : sums_.owner);
+    }
+  }
+
+  // The last owner's sums, the remaining walls, the remaining kicks.
+  void finish() {
+    const auto [begin, end] = block_;
+    if (begin < end) {
+      in_.p.force[sums_.owner] += sums_.force;
+      in_.p.torque[sums_.owner] += sums_.torque;
+    }
+    walls_before(end);
+    run_wall_batch();
+    kick_before(end);
+  }
+
+  // The wall contacts of the block's particles before `done` (all their pair shares are in).
+  void walls_before(std::size_t done) {
+    for (; next_near_wall_ != in_.near_walls_end && *next_near_wall_ < done; ++next_near_wall_) {
+      const std::uint32_t i = *next_near_wall_;
+      if (wall_batch_.count + (in_.wall_list.first[i + 1] - in_.wall_list.first[i]) > WallBatch::kCapacity)
+        run_wall_batch();
+      collect_wall_contacts(i, in_.p, in_.walls, in_.wall_list, wall_batch_);
+    }
+  }
+
+  void run_wall_batch() {
+    wall_forces(wall_batch_, in_.wall_laws, in_.p, in_.wall_list, in_.dt, wall_loads_, max_overlap_);
+  }
+
+  // The second half kick of the particles before `limit` (their forces are complete).
+  void kick_before(std::size_t limit) {
+    for (; next_kick_ < limit; ++next_kick_) any_bad_ |= in_.second_half_kick(next_kick_);
+  }
+
+  const SweepInputs& in_;
+  const ThreadBlock block_;
+  ContactBatch& batch_;
+  WallBatch& wall_batch_;
+  std::vector<PartnerShare>& later_;
+  Vec3* wall_loads_;
+  const std::uint32_t* next_near_wall_ = nullptr;
+  std::size_t next_kick_ = 0;
+  OwnerSums sums_{};
+  double max_overlap_ = 0.0;
+  int any_bad_ = 0;
+};
+
+}  // namespace
+
+// The pair kernel over the half list, contact-major. Particles are in cell order and each
+// thread owns a contiguous block of them. A first loop walks the block's listed pairs, tests
+// touching and appends the touching ones to a batch without a branch (about a third of the
+// listed pairs touch, at random: a branch on it mispredicts). Each full batch then runs the
+// contact law as one loop over its contacts that the compiler vectorises (the law's branches
+// become selects), and a last, scalar loop stores the histories and adds the forces in pair order.
+// A pair's owner (first body) is in the thread's block and its partner (second body, higher
+// index) usually is too: then both shares are added at once. A partner in a later thread's block
+// receives its share after the loop, from a per-thread list, in thread order. The sums are
+// therefore the same every time for a given thread count; another thread count changes only the
+// order of a few additions (round-off).
+// The wall contacts of the block's particles are found in the same sweep, as soon as a particle's
+// pairs are all done (its data is still in cache then; a pass of its own re-read it from memory at
+// 80k particles), and run through the law in batches of their own. Each thread sums its own wall
+// loads; the threads' sums are added in thread order. With `kick`, each particle also gets the
+// second half kick of the step as soon as its force is complete.
+void Simulation::contacts(bool kick) {
+  const std::size_t n = p_.size();
+  const int threads = omp_get_max_threads();
+  ContactSweep& s = *sweep_;
+  s.deferred.resize(std::size_t(threads));
+  s.batches.resize(std::size_t(threads));
+  s.wall_batches.resize(std::size_t(threads));
+  const std::size_t n_walls = walls_.size();
+  s.wall_loads.assign(std::size_t(threads) * n_walls * 2, Vec3{});  // force, torque per thread and wall
+  const SecondHalfKick second_half_kick{p_.velocity.data(), p_.angular_velocity.data(), p_.force.data(),
+                                        p_.torque.data(),   p_.inv_mass.data(),         p_.inv_inertia.data(),
+                                        gravity(),          0.5 * dt_,                  !settings_.freeze_rotation};
+  const SweepInputs in{p_,
+                       settings_.domain,
+                       settings_.domain.any_periodic(),
+                       dt_,
+                       {pairs_.first.data(), pairs_.partner.data(), pair_contact_.data(),
+                        static_cast<std::uint32_t>(pairs_.size())},
+                       contacts_.data(),
+                       contacts_next_.data(),
+                       pairs_.first.data(),
+                       pair_batch_law(s.particle_choices),
+                       s.particle_params,
+                       walls_,
+                       wall_list_,
+                       s.wall_laws,
+                       particles_near_walls_.data(),
+                       particles_near_walls_.data() + particles_near_walls_.size(),
+                       partner_reach_.data(),
+                       second_half_kick,
+                       kick};
+  double max_overlap = 0.0;
+  int any_bad = 0;
+#pragma omp parallel reduction(max : max_overlap) reduction(| : any_bad)
+  {
+    const int me = omp_get_thread_num();
+    BlockSweep sweep(in, thread_block(n, me, omp_get_num_threads()), s.batches[std::size_t(me)],
+                     s.wall_batches[std::size_t(me)], s.deferred[std::size_t(me)],
+                     s.wall_loads.data() + std::size_t(me) * n_walls * 2);
+    any_bad |= sweep.run(max_overlap);
+  }
+  add_deferred_shares();
+  if (kick) any_bad |= kick_after_deferred_shares(second_half_kick, threads);
+  bad_particle_ = any_bad ? first_non_finite_particle() : -1;
+  contacts_.swap(contacts_next_);
+  max_overlap_seen_ = max_overlap;
+  sum_wall_loads(threads);
+}
+
+// The shares for partners in later threads' blocks, in thread order.
+void Simulation::add_deferred_shares() {
+  for (const auto& shares : sweep_->deferred) {
+    for (const PartnerShare& s : shares) {
+      p_.force[s.particle] += s.force;
+      p_.torque[s.particle] += s.torque;
+    }
+  }
+}
+
+// The particles that received a share after the sweep, block by block: each block's particles
+// below the highest partner of the earlier blocks' owners (partner_reach_).
+int Simulation::kick_after_deferred_shares(const SecondHalfKick& second_half_kick, int threads) {
+  int any_bad = 0;
+  for (int th = 0; th < threads; ++th) {
+    const auto [begin, end] = thread_block(p_.size(), th, threads);
+    const std::size_t reach = std::min(end, std::max<std::size_t>(begin, partner_reach_[begin]));
+    for (std::size_t p = begin; p < reach; ++p) any_bad |= second_half_kick(p);
+  }
+  return any_bad;
+}
+
+std::int64_t Simulation::first_non_finite_particle() const {
+  for (std::size_t i = 0; i < p_.size(); ++i)
+    if (!is_finite(p_.velocity[i]) || !is_finite(p_.angular_velocity[i])) return std::int64_t(i);
+  return -1;
+}
+
+// The walls' loads: each thread's sums, in thread order.
+void Simulation::sum_wall_loads(int threads) {
+  const std::size_t n_walls = walls_.size();
+  for (std::size_t k = 0; k < n_walls; ++k) {
+    walls_[k].force = Vec3{};
+    walls_[k].torque = Vec3{};
+    for (int th = 0; th < threads; ++th) {
+      walls_[k].force += sweep_->wall_loads[(std::size_t(th) * n_walls + k) * 2];
+      walls_[k].torque += sweep_->wall_loads[(std::size_t(th) * n_walls + k) * 2 + 1];
+    }
+  }
+}
+
+}  // namespace trapdem

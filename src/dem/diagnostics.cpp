@@ -1,0 +1,117 @@
+#include <algorithm>
+#include <string>
+#include <vector>
+
+#include <fmt/format.h>
+
+#include "core/errors.hpp"
+#include "dem/simulation.hpp"
+
+// The engine's diagnostics: energies and contact counts (deterministic serial sums), and the
+// checks that stop a failing run with a message naming the particle, the step and the likely cause.
+
+namespace trapdem {
+
+std::string Simulation::describe_particle(std::uint32_t i) const {
+  const Vec3& x = p_.position[i];
+  const Vec3& v = p_.velocity[i];
+  return fmt::format("particle id {} (radius {:.4g} m) at ({:.6g}, {:.6g}, {:.6g}) m moving at ({:.4g}, {:.4g}, {:.4g}) m/s",
+                     p_.id[i], p_.radius[i], x.x, x.y, x.z, v.x, v.y, v.z);
+}
+
+void Simulation::check_stability() const {
+  if (bad_particle_ < 0 && escaped_particle_ < 0 && !(max_overlap_seen_ > settings_.max_overlap_fraction)) return;
+  // Only a failing run gets here: the message costs a scan of the masses and a string.
+  const std::string when = fmt::format("step {} (t = {:.6g} s, dt = {:.4g} s, critical step {:.4g} s)", stats_.steps,
+                                       time_, dt_, critical_time_step());
+  if (bad_particle_ >= 0)
+    throw SimulationError(fmt::format(
+        "unstable run at {}: {} has a non-finite velocity (NaN or Inf). Likely cause: the time step is too large for "
+        "the stiffness, or an input value is not a number.",
+        when, describe_particle(static_cast<std::uint32_t>(bad_particle_))));
+  if (escaped_particle_ >= 0) {
+    const Domain& d = settings_.domain;
+    throw SimulationError(fmt::format(
+        "particle left the domain at {}: {} is outside [{:.6g}, {:.6g}] x [{:.6g}, {:.6g}] x [{:.6g}, {:.6g}] m. Likely "
+        "cause: a missing or too soft wall (it passed through), or an unstable time step.",
+        when, describe_particle(static_cast<std::uint32_t>(escaped_particle_)), d.lower.x, d.upper.x, d.lower.y,
+        d.upper.y, d.lower.z, d.upper.z));
+  }
+  if (max_overlap_seen_ > settings_.max_overlap_fraction) {
+    // Find the worst contact again (only on failure) to name it and the stiffness that governs it:
+    // the particle law's for a pair, the wall's own law for a particle-wall contact.
+    std::string where = "a particle-wall contact";
+    std::string stiffness_of = "particle";
+    const ContactLaw* governing = &law_;
+    double worst = 0.0;
+    const Domain& dom = settings_.domain;
+    for (std::uint32_t i = 0; i + 1 < pairs_.first.size(); ++i) {
+      for (std::uint32_t k = pairs_.first[i]; k < pairs_.first[i + 1]; ++k) {
+        const std::uint32_t j = pairs_.partner[k];
+        const double ov = p_.radius[i] + p_.radius[j] - norm(dom.minimum_image(p_.position[i] - p_.position[j]));
+        const double frac = ov / std::min(p_.radius[i], p_.radius[j]);
+        if (frac > worst) {
+          worst = frac;
+          where = fmt::format("the contact of particle ids {} and {}", p_.id[i], p_.id[j]);
+        }
+      }
+    }
+    for (std::uint32_t i = 0; i + 1 < wall_list_.first.size(); ++i) {
+      for (std::uint32_t k = wall_list_.first[i]; k < wall_list_.first[i + 1]; ++k) {
+        const Wall& w = walls_[wall_list_.wall[k]];
+        const double frac = (p_.radius[i] - wall_proximity(w, p_.position[i]).distance) / p_.radius[i];
+        if (frac > worst) {
+          worst = frac;
+          where = fmt::format("the contact of particle id {} with wall '{}'", p_.id[i], w.name);
+          stiffness_of = fmt::format("wall '{}'", w.name);
+          governing = &w.law;
+        }
+      }
+    }
+    // Above the central-difference limit 2 sqrt(m/k) the integration itself is unstable: advising a
+    // stiffer contact would make it worse.
+    const double limit = 2.0 * critical_time_step();
+    std::vector<const ContactLaw*> wall_laws;
+    for (const Wall& w : walls_) wall_laws.push_back(&w.law);
+    const std::string cause =
+        dt_ > limit
+            ? fmt::format("the time step ({:.4g} s) exceeds the stability limit 2 {} = {:.4g} s: "
+                          "lower settings.time_step (or time_step_fraction; 0.1-0.2 is usual)",
+                          dt_, critical_time_step_formula(law_, wall_laws), limit)
+            : fmt::format("the {} is too low for the load (raise it, or lower gravity), or the time step is too large",
+                          describe_stiffness(*governing, stiffness_of));
+    throw SimulationError(fmt::format(
+        "overlap blow-up at {}: {} overlaps by {:.1f}% of the smaller radius (limit {:.1f}%). Likely cause: {}.", when,
+        where, 100.0 * max_overlap_seen_, 100.0 * settings_.max_overlap_fraction, cause));
+  }
+}
+
+double Simulation::translational_kinetic_energy() const {
+  double e = 0.0;
+  for (std::size_t i = 0; i < p_.size(); ++i) e += 0.5 * p_.mass[i] * norm2(p_.velocity[i]);
+  return e;
+}
+
+double Simulation::rotational_kinetic_energy() const {
+  double e = 0.0;
+  for (std::size_t i = 0; i < p_.size(); ++i) e += 0.5 / p_.inv_inertia[i] * norm2(p_.angular_velocity[i]);
+  return e;
+}
+
+double Simulation::potential_energy(double reference_height) const {
+  const Vec3 g = gravity();
+  const double g_len = norm(g);
+  if (g_len == 0.0) return 0.0;
+  const Vec3 up = -g / g_len;
+  double e = 0.0;
+  for (std::size_t i = 0; i < p_.size(); ++i) e += p_.mass[i] * g_len * (dot(p_.position[i], up) - reference_height);
+  return e;
+}
+
+std::size_t Simulation::contact_count() const {
+  std::size_t c = 0;
+  for (std::uint32_t slot : pair_contact_) c += slot != kNoContact ? 1 : 0;
+  return c;
+}
+
+}  // namespace trapdem

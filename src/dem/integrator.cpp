@@ -1,0 +1,65 @@
+#include "dem/integrator.hpp"
+
+#include <algorithm>
+#include <limits>
+
+namespace trapdem {
+
+DriftReport first_half_kick_and_drift(Particles& p, const Vec3* position_at_build, const Vec3& gravity, double dt,
+                                      const Domain& domain, bool rotate) {
+  const double half = 0.5 * dt;
+  const Vec3 g = gravity;
+  // Bounds of the escape check: none on periodic axes.
+  Vec3 lo = domain.lower, hi = domain.upper;
+  for (int a = 0; a < 3; ++a) {
+    if (domain.periodic[a]) {
+      lo[a] = -std::numeric_limits<double>::infinity();
+      hi[a] = std::numeric_limits<double>::infinity();
+    }
+  }
+  const std::size_t n = p.size();
+  Vec3* x = p.position.data();
+  Vec3* v = p.velocity.data();
+  Vec3* w = p.angular_velocity.data();
+  const Vec3* f = p.force.data();
+  const Vec3* t = p.torque.data();
+  const double* inv_m = p.inv_mass.data();
+  const double* inv_i = p.inv_inertia.data();
+  const bool track = position_at_build != nullptr;
+  const Vec3* x0 = position_at_build;
+  // Whether any particle left is a flag here (a reduction the loop vectorises with); which one,
+  // only when one did.
+  double max_d2 = 0.0;
+  int outside = 0;
+#pragma omp parallel for simd schedule(static) reduction(max : max_d2) reduction(| : outside)
+  for (std::size_t i = 0; i < n; ++i) {
+    v[i] += half * (f[i] * inv_m[i] + g);
+    x[i] += dt * v[i];
+    if (rotate) w[i] += (half * inv_i[i]) * t[i];
+    if (track) max_d2 = std::max(max_d2, norm2(x[i] - x0[i]));
+    const bool inside = x[i].x >= lo.x && x[i].x <= hi.x && x[i].y >= lo.y && x[i].y <= hi.y && x[i].z >= lo.z &&
+                        x[i].z <= hi.z;  // false for NaN too
+    outside |= inside ? 0 : 1;
+  }
+  DriftReport report;
+  report.max_displacement2 = max_d2;
+  for (std::size_t i = 0; outside && i < n; ++i) {
+    const bool inside = x[i].x >= lo.x && x[i].x <= hi.x && x[i].y >= lo.y && x[i].y <= hi.y && x[i].z >= lo.z &&
+                        x[i].z <= hi.z;
+    if (!inside) {
+      report.escaped = std::int64_t(i);
+      break;
+    }
+  }
+  return report;
+}
+
+void move_walls(std::vector<Wall>& walls, double time, double dt) {
+  for (Wall& wall : walls) {
+    wall.current_velocity = wall.velocity ? wall.velocity(time + 0.5 * dt) : Vec3{};
+    wall.origin += dt * wall.current_velocity;
+    wall.displacement += dt * wall.current_velocity;
+  }
+}
+
+}  // namespace trapdem

@@ -1,0 +1,48 @@
+#pragma once
+// Velocity Verlet as LAMMPS's nve/sphere: the first half kick and drift of every particle (with
+// the escape check and the displacement since the last list build), the walls' prescribed
+// motion, and the second half kick of one particle whose force is complete (the contact sweep
+// gives it as soon as it is).
+#include <cstdint>
+#include <vector>
+
+#include "dem/domain.hpp"
+#include "dem/particles.hpp"
+#include "dem/vec3.hpp"
+#include "dem/wall.hpp"
+
+namespace trapdem {
+
+struct DriftReport {
+  double max_displacement2 = 0.0;  // m^2, largest squared displacement since the list build
+  std::int64_t escaped = -1;       // the first particle outside the domain's bounded axes, or -1
+};
+
+// v += dt/2 (F/m + g), x += dt v, w += dt/2 T/I (w unchanged when `rotate` is false).
+// `position_at_build`: the positions at the last list build, or null when they are not tracked.
+DriftReport first_half_kick_and_drift(Particles& p, const Vec3* position_at_build, const Vec3& gravity, double dt,
+                                      const Domain& domain, bool rotate);
+
+// Each wall moves by its prescribed velocity at the middle of the step [time, time + dt].
+void move_walls(std::vector<Wall>& walls, double time, double dt);
+
+// The second half kick for one particle whose force is complete: v += dt/2 (F/m + g),
+// w += dt/2 T/I. Returns 1 when the result is not finite.
+struct SecondHalfKick {
+  Vec3* __restrict v;
+  Vec3* __restrict w;
+  const Vec3* __restrict f;
+  const Vec3* __restrict t;
+  const double* __restrict inv_m;
+  const double* __restrict inv_i;
+  Vec3 g;
+  double half;
+  bool rotate;
+  int operator()(std::size_t p) const {
+    v[p] += half * (f[p] * inv_m[p] + g);
+    if (rotate) w[p] += (half * inv_i[p]) * t[p];
+    return is_finite(v[p]) && is_finite(w[p]) ? 0 : 1;
+  }
+};
+
+}  // namespace trapdem

@@ -1,0 +1,75 @@
+#include "dem/pair_list.hpp"
+
+#include <omp.h>
+
+#include <algorithm>
+#include <array>
+#include <numeric>
+
+#include "dem/thread_block.hpp"
+
+namespace trapdem {
+
+std::uint32_t PairList::owner_of(std::size_t pair) const {
+  auto it = std::upper_bound(first.begin(), first.end(), static_cast<std::uint32_t>(pair));
+  return static_cast<std::uint32_t>(it - first.begin() - 1);
+}
+
+void build_pairs(const Particles& p, const CellSort& cells, const Domain& domain, double skin, PairList& out) {
+  const std::size_t n = p.size();
+  const bool periodic = domain.any_periodic();
+  // In cell order (the engine re-orders the particles at every rebuild by default) a cell of lower
+  // index holds lower particle indices only: a half list's partners j > i are then in the
+  // particle's own cell and the higher cells of its stencil, half the cells to search.
+  const bool in_cell_order = std::is_sorted(cells.cell_of.begin(), cells.cell_of.end());
+  out.first.assign(n + 1, 0);
+  std::vector<std::vector<std::uint32_t>> found(static_cast<std::size_t>(omp_get_max_threads()));
+  // One pass: each thread lists the partners of a contiguous block of particles, then copies them
+  // into place; the list is the same for any thread count.
+#pragma omp parallel
+  {
+    const int me = omp_get_thread_num();
+    const auto [begin, end] = thread_block(n, me, omp_get_num_threads());
+    std::vector<std::uint32_t>& mine = found[std::size_t(me)];
+    mine.clear();
+    std::array<std::uint32_t, 27> stencil;
+    int stencil_size = 0;
+    std::uint32_t stencil_of = ~0u;
+    for (std::size_t i = begin; i < end; ++i) {
+      const std::uint32_t cell = cells.cell_of[i];
+      if (cell != stencil_of) {
+        stencil_size = cells.grid.neighbours(cell, stencil);
+        if (in_cell_order)
+          stencil_size = int(std::remove_if(stencil.begin(), stencil.begin() + stencil_size,
+                                            [cell](std::uint32_t c) { return c < cell; }) -
+                             stencil.begin());
+        stencil_of = cell;
+      }
+      const std::size_t before = mine.size();
+      const Vec3 xi = p.position[i];
+      const double ri = p.radius[i] + skin;
+      for (int c = 0; c < stencil_size; ++c) {
+        for (std::uint32_t s = cells.cell_start[stencil[c]]; s < cells.cell_start[stencil[c] + 1]; ++s) {
+          const std::uint32_t j = cells.order[s];
+          if (j <= i) continue;
+          Vec3 d = xi - p.position[j];
+          if (periodic) d = domain.minimum_image(d);
+          const double reach = ri + p.radius[j];
+          if (norm2(d) < reach * reach) mine.push_back(j);
+        }
+      }
+      std::sort(mine.begin() + std::ptrdiff_t(before), mine.end());
+      out.first[i + 1] = static_cast<std::uint32_t>(mine.size() - before);
+    }
+#pragma omp barrier
+#pragma omp single
+    {
+      std::partial_sum(out.first.begin(), out.first.end(), out.first.begin());
+      out.partner.resize(out.first[n]);
+    }
+    std::copy(mine.begin(), mine.end(), out.partner.begin() + out.first[begin]);
+  }
+  out.history.clear();
+}
+
+}  // namespace trapdem

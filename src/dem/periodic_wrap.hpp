@@ -1,0 +1,13 @@
+#pragma once
+// Particles that left the domain across a periodic axis re-enter on the other side.
+#include "dem/domain.hpp"
+#include "dem/particles.hpp"
+
+namespace trapdem {
+
+// Wraps positions on the periodic axes into [lower, upper), counting the images crossed
+// (Particles::image, to unwrap positions). Done at list rebuilds: between them a particle moves
+// less than half the skin, and the pair kernel takes the minimum image.
+void wrap_periodic(Particles& p, const Domain& domain);
+
+}  // namespace trapdem
