@@ -34,9 +34,10 @@ ContactLaw read_contact_law(Config table, const ContactLaw& base) {
     const double kt_default = table.has("normal_stiffness") ? 0.5 * law.normal_stiffness : base.tangential_stiffness;
     law.tangential_stiffness = table.get_double("tangential_stiffness", kt_default, "N/m", Range::non_negative());
   }
-  law.youngs_modulus = hertz && !(base.youngs_modulus > 0.0)
-                           ? table.require_double("youngs_modulus", "Pa", Range::positive())
-                           : table.get_double("youngs_modulus", base.youngs_modulus, "Pa", Range::positive());
+  // Read only when given (or required): the unset default (0) is no valid modulus to write back.
+  law.youngs_modulus = hertz && !(base.youngs_modulus > 0.0) ? table.require_double("youngs_modulus", "Pa", Range::positive())
+                       : table.has("youngs_modulus")        ? table.get_double("youngs_modulus", 0.0, "Pa", Range::positive())
+                                                             : base.youngs_modulus;
   law.poisson_ratio = table.get_double("poisson_ratio", base.poisson_ratio, "", Range{0.0, 0.5, true, false});
   law.restitution = table.get_double("restitution", base.restitution, "", Range::unit_open_closed());
   law.static_friction = table.get_double("static_friction", base.static_friction, "", Range::non_negative());
