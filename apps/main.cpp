@@ -50,6 +50,7 @@ int main(int argc, char** argv) {
   an->add_option("--front-depth", analyze.front_depth, "Front view depth from the glass (default 1.5 max diameters)");
   an->add_flag("--incremental", analyze.incremental, "Also accumulate incremental strain over the snapshots between");
   an->add_option("--grid", analyze.grid, "Grid spacing of the vertical displacement, e.g. 2mm (default d/2)");
+  an->add_option("--smoothing", analyze.smoothing, "Strain smoothing (Gaussian) for band tracing and the strain map, in mean diameters (default 2; 0: none)")->check(CLI::NonNegativeNumber);
   an->add_option("--dumps", analyze.dumps, "LAMMPS/LIGGGHTS text dumps (id x y z radius) instead of snapshots.h5");
   an->add_option("--displacements", analyze.displacements, "Trapdoor displacement of each dump: 0mm,10mm,...");
   an->add_option("--config", analyze.config, "Geometry (TOML with [box], [trapdoor]; default DIR/resolved.toml)");

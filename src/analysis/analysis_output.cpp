@@ -13,16 +13,9 @@ namespace fs = std::filesystem;
 
 namespace {
 
-Json band_json(const ShearBand& band, const AnalysisResult& r) {
-  Json b = Json::object();
-  b.set("angle_deg", band.angle_deg);
-  b.set("base_angle_deg", band.base_angle_deg);
-  b.set("height_reached_m", band.height_reached);
-  b.set("height_reached_over_B", band.height_reached / r.geometry.trapdoor.width);
-  b.set("width_diameters", band.width_diameters);
-  b.set("trace_points", band.trace.size());
+Json trace_json(const std::vector<BandTracePoint>& points) {
   Json z = Json::array(), x = Json::array(), peak = Json::array(), width = Json::array();
-  for (const auto& p : band.trace) {
+  for (const auto& p : points) {
     z.push_back(p.z);
     x.push_back(p.x);
     peak.push_back(p.peak);
@@ -31,10 +24,55 @@ Json band_json(const ShearBand& band, const AnalysisResult& r) {
   Json trace = Json::object();
   trace.set("z_m", z);
   trace.set("x_m", x);
-  trace.set("peak_gamma_max", peak);
+  trace.set("peak_gamma_max_smoothed", peak);
   trace.set("horizontal_width_m", width);
-  b.set("trace", trace);
+  return trace;
+}
+
+Json band_json(const ShearBand& band, const AnalysisResult& r) {
+  const double B = r.geometry.trapdoor.width;
+  Json b = Json::object();
+  b.set("angle_deg", band.angle_deg);
+  b.set("angle_error_deg", band.angle_error_deg);
+  b.set("base_angle_deg", band.base_angle_deg);
+  b.set("base_angle_error_deg", band.base_angle_error_deg);
+  b.set("height_reached_m", band.height_reached);
+  b.set("height_reached_over_B", band.height_reached / B);
+  b.set("end", band_end_name(band.end));
+  b.set("width_diameters", band.width_diameters);
+  b.set("trace_points", band.trace.size());
+  b.set("trace", trace_json(band.trace));
+  Json branches = Json::array();
+  for (const auto& branch : band.branches) {
+    Json e = Json::object();
+    e.set("height_m", branch.height);
+    e.set("height_over_B", branch.height / B);
+    e.set("angle_deg", branch.angle_deg);
+    e.set("angle_error_deg", branch.angle_error_deg);
+    e.set("top_m", branch.trace.back().z - r.geometry.trapdoor.base_z);
+    e.set("trace", trace_json(branch.trace));
+    branches.push_back(e);
+  }
+  b.set("branches", branches);
   return b;
+}
+
+// The side-wall warning in words, with its numbers; empty when there is none.
+std::string side_wall_warning_text(const AnalysisResult& r) {
+  const ZoneOfInfluence& z = r.zone;
+  if (!z.wall_warning) return {};
+  const double B = r.geometry.trapdoor.width, travel = r.trapdoor_travel();
+  const double span = z.wall_right_x - z.wall_left_x;
+  return fmt::format(
+      "the zone of influence {} the side walls: settlement beside the walls {} mm (left) and {} mm (right) = "
+      "{:.1f} % / {:.1f} % of the trapdoor travel (zone threshold {:.1f} %, warning at {:.1f} %); surface zone "
+      "{:.2f} B wide in a {:.2f} B box, its edges {:.2f} B and {:.2f} B from the walls. Widths and a sinkhole size "
+      "read from this run are bounded by the box",
+      z.reaches_wall ? "reaches" : "is close to", fmt::format("{:.2f}", z.wall_settlement_left * 1e3),
+      fmt::format("{:.2f}", z.wall_settlement_right * 1e3), 100.0 * z.wall_settlement_left / travel,
+      100.0 * z.wall_settlement_right / travel, 100.0 * r.settings.zone.settlement_fraction,
+      100.0 * r.settings.zone.settlement_fraction * r.settings.zone.wall_warning_fraction, z.surface_width / B,
+      span / B, (z.surface_left - z.wall_left_x) / B, (z.wall_right_x - z.surface_right) / B);
 }
 
 std::vector<double> component(const std::vector<PlaneStrain>& strains, double PlaneStrain::*member) {
@@ -102,7 +140,10 @@ Json metrics_json(const AnalysisResult& r) {
 
   Json bands = Json::object();
   bands.set("angle_convention", "degrees to the vertical, positive leaning outward (zone widening upward)");
+  bands.set("angle_error", "standard error of the fitted slope (residual autocorrelation corrected), degrees");
   bands.set("ridge_threshold", r.settings.bands.ridge_threshold);
+  bands.set("smoothing_diameters", r.settings.bands.smoothing_diameters);
+  bands.set("smoothing_m", r.settings.bands.smoothing_diameters * r.mean_diameter);
   bands.set("left", band_json(r.bands.left, r));
   bands.set("right", band_json(r.bands.right, r));
   j.set("shear_bands", bands);
@@ -127,7 +168,30 @@ Json metrics_json(const AnalysisResult& r) {
   zone.set("shape", !std::isfinite(r.zone.shape_ratio) ? "unknown"
                     : r.zone.shape_ratio < 1.3                 ? "columnar"
                                                                : "elliptical");
+  const double travel = r.trapdoor_travel();
+  Json wall = Json::object();
+  wall.set("warning", r.zone.wall_warning);
+  wall.set("reaches_wall", r.zone.reaches_wall);
+  wall.set("warning_fraction_of_threshold", r.settings.zone.wall_warning_fraction);
+  wall.set("settlement_left_m", r.zone.wall_settlement_left);
+  wall.set("settlement_right_m", r.zone.wall_settlement_right);
+  wall.set("settlement_left_over_travel", r.zone.wall_settlement_left / travel);
+  wall.set("settlement_right_over_travel", r.zone.wall_settlement_right / travel);
+  wall.set("surface_zone_left_m", r.zone.surface_left);
+  wall.set("surface_zone_right_m", r.zone.surface_right);
+  wall.set("wall_left_m", r.zone.wall_left_x);
+  wall.set("wall_right_m", r.zone.wall_right_x);
+  wall.set("edge_to_wall_left_over_B", (r.zone.surface_left - r.zone.wall_left_x) / B);
+  wall.set("edge_to_wall_right_over_B", (r.zone.wall_right_x - r.zone.surface_right) / B);
+  wall.set("box_span_over_B", (r.zone.wall_right_x - r.zone.wall_left_x) / B);
+  zone.set("side_walls", wall);
   j.set("zone_of_influence", zone);
+
+  // Everything a reader of the numbers must know first (the study report and `sinkhole --from`
+  // read this list).
+  Json warnings = Json::array();
+  if (const std::string text = side_wall_warning_text(r); !text.empty()) warnings.push_back(text);
+  j.set("warnings", warnings);
   return j;
 }
 
@@ -179,6 +243,7 @@ void write_fields(const fs::path& dir, const AnalysisResult& r) {
     tri.write_doubles("exx", component(r.strain, &PlaneStrain::exx));
     tri.write_doubles("ezz", component(r.strain, &PlaneStrain::ezz));
     tri.write_doubles("gamma_xz", component(r.strain, &PlaneStrain::gamma_xz));
+    tri.write_doubles("gamma_max_smoothed", r.gamma_max_smoothed);
     if (r.has_incremental) {
       tri.write_doubles("gamma_max_incremental", r.gamma_max_incremental);
       tri.write_doubles("volumetric_strain_incremental", r.volumetric_incremental);
@@ -197,23 +262,37 @@ void write_fields(const fs::path& dir, const AnalysisResult& r) {
     grid.write_doubles("vertical_displacement", r.vertical_displacement.value, "m");
 
     const Hdf5Group bands = file.create_group("bands");
-    for (const ShearBand* band : {&r.bands.left, &r.bands.right}) {
-      const Hdf5Group b = bands.create_group(band->side == BandSide::left ? "left" : "right");
+    const auto write_trace = [](const Hdf5Group& g, const std::vector<BandTracePoint>& trace) {
       std::vector<double> z, x, peak, width;
-      for (const auto& p : band->trace) {
+      for (const auto& p : trace) {
         z.push_back(p.z);
         x.push_back(p.x);
         peak.push_back(p.peak);
         width.push_back(p.horizontal_width);
       }
-      b.write_doubles("z", z, "m");
-      b.write_doubles("x", x, "m");
-      b.write_doubles("peak_gamma_max", peak);
-      b.write_doubles("horizontal_width", width, "m");
+      g.write_doubles("z", z, "m");
+      g.write_doubles("x", x, "m");
+      g.write_doubles("peak_gamma_max", peak);
+      g.write_doubles("horizontal_width", width, "m");
+    };
+    bands.set_double_attribute("smoothing_diameters", r.settings.bands.smoothing_diameters);
+    for (const ShearBand* band : {&r.bands.left, &r.bands.right}) {
+      const Hdf5Group b = bands.create_group(band->side == BandSide::left ? "left" : "right");
+      write_trace(b, band->trace);
       b.set_double_attribute("angle_deg", band->angle_deg);
+      b.set_double_attribute("angle_error_deg", band->angle_error_deg);
       b.set_double_attribute("base_angle_deg", band->base_angle_deg);
       b.set_double_attribute("height_reached", band->height_reached);
+      b.set_string_attribute("end", band_end_name(band->end));
       b.set_double_attribute("width_diameters", band->width_diameters);
+      for (std::size_t k = 0; k < band->branches.size(); ++k) {
+        const BandBranch& branch = band->branches[k];
+        const Hdf5Group g = b.create_group(fmt::format("branch_{}", k));
+        write_trace(g, branch.trace);
+        g.set_double_attribute("height", branch.height);
+        g.set_double_attribute("angle_deg", branch.angle_deg);
+        g.set_double_attribute("angle_error_deg", branch.angle_error_deg);
+      }
     }
     file.write_image(temporary);
   });
@@ -240,7 +319,7 @@ std::string fields_xdmf(const AnalysisResult& r, const std::string& h5) {
     s += fmt::format("        <DataItem Dimensions=\"{}\" NumberType=\"Float\" Precision=\"8\" Format=\"HDF\">{}:/triangles/{}</DataItem>\n", m, h5, name);
     s += "      </Attribute>\n";
   };
-  for (const char* name : {"gamma_max", "volumetric_strain", "exx", "ezz", "gamma_xz"}) cell(name);
+  for (const char* name : {"gamma_max", "gamma_max_smoothed", "volumetric_strain", "exx", "ezz", "gamma_xz"}) cell(name);
   if (r.has_incremental) {
     for (const char* name : {"gamma_max_incremental", "volumetric_strain_incremental"}) cell(name);
   }
@@ -264,12 +343,23 @@ std::string metrics_table(const AnalysisResult& r) {
                    format_mm(d));
   s += fmt::format("  triangles: {} kept of {} (dropped {} long-edge, {} sliver)\n", r.mesh.mesh.size(),
                    r.delaunay_triangles, r.mesh.dropped_long_edge, r.mesh.dropped_sliver);
-  s += "  shear band   angle(deg)  base angle(deg)  height(mm)  height/B  width(d)\n";
+  s += fmt::format("  shear bands (traced on gamma_max smoothed over {:g} d; angle +- standard error of the fit)\n",
+                   r.settings.bands.smoothing_diameters);
+  s += "  band     angle(deg)       base angle(deg)  height(mm)  height/B  width(d)  end\n";
+  const auto with_error = [&](double v, double e) {
+    if (!std::isfinite(v)) return std::string("-");
+    return std::isfinite(e) ? fmt::format("{:.1f} +- {:.1f}", v, e) : fmt::format("{:.1f} +- ?", v);
+  };
   for (const ShearBand* b : {&r.bands.left, &r.bands.right}) {
-    s += fmt::format("  {:<10} {:>11} {:>16} {:>11} {:>9} {:>9}\n", b->side == BandSide::left ? "left" : "right",
-                     num(b->angle_deg, "{:.1f}"), num(b->base_angle_deg, "{:.1f}"),
+    s += fmt::format("  {:<7} {:>14} {:>18} {:>11} {:>9} {:>9}  {}\n", b->side == BandSide::left ? "left" : "right",
+                     with_error(b->angle_deg, b->angle_error_deg), with_error(b->base_angle_deg, b->base_angle_error_deg),
                      num(b->height_reached * 1e3, "{:.1f}"), num(b->height_reached / B, "{:.2f}"),
-                     num(b->width_diameters, "{:.1f}"));
+                     num(b->width_diameters, "{:.1f}"), band_end_name(b->end));
+    for (const auto& branch : b->branches) {
+      s += fmt::format("    branch leaving at {} mm, to {} mm, angle {} deg\n", num(branch.height * 1e3, "{:.1f}"),
+                       num((branch.trace.back().z - r.geometry.trapdoor.base_z) * 1e3, "{:.1f}"),
+                       with_error(branch.angle_deg, branch.angle_error_deg));
+    }
   }
   s += fmt::format("  zone of influence (settlement >= {:.0f}% of travel): surface {} mm ({} B)", 
                    100.0 * r.settings.zone.settlement_fraction, num(r.zone.surface_width * 1e3, "{:.1f}"),
@@ -278,6 +368,7 @@ std::string metrics_table(const AnalysisResult& r) {
     s += fmt::format(", at {} mm {} mm", num(w.height * 1e3, "{:.0f}"), num(w.width * 1e3, "{:.1f}"));
   }
   s += fmt::format("; shape ratio {} (mid-height width / B)\n", num(r.zone.shape_ratio, "{:.2f}"));
+  if (const std::string text = side_wall_warning_text(r); !text.empty()) s += "  WARNING: " + text + "\n";
   return s;
 }
 

@@ -6,6 +6,7 @@
 #include <unordered_map>
 
 #include "analysis/delaunay.hpp"
+#include "analysis/field_smoothing.hpp"
 #include "io/lammps_dump.hpp"
 #include "analysis/grid_interpolation.hpp"
 #include "analysis/horizontal_profile.hpp"
@@ -158,8 +159,11 @@ AnalysisResult analyze_frames(const std::vector<AnalysisFrame>& frames, const Sp
 
   // Metrics.
   settings.bands.mean_diameter = r.mean_diameter;
-  r.bands = trace_shear_bands(make_triangle_field(r.mesh.mesh, r.points.position, r.gamma_max), geometry.trapdoor,
-                              settings.bands);
+  const TriangleField gamma_field = make_triangle_field(r.mesh.mesh, r.points.position, r.gamma_max);
+  const TriangleField smoothed =
+      smooth_triangle_field(gamma_field, settings.bands.smoothing_diameters * r.mean_diameter);
+  r.gamma_max_smoothed = smoothed.value;
+  r.bands = trace_shear_bands(gamma_field, smoothed, geometry.trapdoor, settings.bands);
   settings.zone.mean_diameter = r.mean_diameter;
   settings.zone.trapdoor_displacement = r.trapdoor_travel();
   r.zone = zone_of_influence(r.points, geometry.trapdoor, settings.zone);

@@ -99,6 +99,9 @@ struct AnalysisResult {
   std::vector<double> volumetric_incremental; // volumetric strain of the accumulated components
 
   GridField vertical_displacement;  // m, w on a regular grid over the reference centres
+  // gamma_max smoothed at settings.bands.smoothing_diameters (field_smoothing.hpp): the field the
+  // bands are traced on and the smoothed strain figure shows; equal to gamma_max when 0.
+  std::vector<double> gamma_max_smoothed;
   ShearBandPair bands;
   ZoneOfInfluence zone;
 };

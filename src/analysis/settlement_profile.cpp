@@ -82,17 +82,21 @@ SettlementProfile surface_settlement_profile(const PointSet2& points, double col
   return profile;
 }
 
-double width_where_settlement_exceeds(const SettlementProfile& p, double x_centre, double threshold) {
-  if (p.x.empty()) return 0.0;
+SettlementStretch stretch_where_settlement_exceeds(const SettlementProfile& p, double x_centre, double threshold) {
+  SettlementStretch stretch{x_centre, x_centre, false, false};
+  if (p.x.empty()) return stretch;
   const double spacing = p.x.size() > 1 ? p.x[1] - p.x[0] : 1.0;
   const auto nearest = static_cast<long>(std::lround((x_centre - p.x[0]) / spacing));
   const auto start = static_cast<std::size_t>(std::clamp(nearest, 0L, static_cast<long>(p.x.size()) - 1));
-  if (!(p.settlement[start] >= threshold)) return 0.0;
-  const auto edge = [&](int direction) {
+  if (!(p.settlement[start] >= threshold)) return stretch;
+  const auto edge = [&](int direction, bool& reaches_end) {
     std::size_t k = start;
     while (true) {
       const long next = static_cast<long>(k) + direction;
-      if (next < 0 || next >= static_cast<long>(p.x.size())) return p.x[k];
+      if (next < 0 || next >= static_cast<long>(p.x.size())) {
+        reaches_end = true;
+        return p.x[k];
+      }
       const auto j = static_cast<std::size_t>(next);
       if (std::isnan(p.settlement[j])) return p.x[k];
       if (p.settlement[j] < threshold) {  // linear crossing between k (above) and j (below)
@@ -102,7 +106,30 @@ double width_where_settlement_exceeds(const SettlementProfile& p, double x_centr
       k = j;
     }
   };
-  return edge(+1) - edge(-1);
+  stretch.left = edge(-1, stretch.reaches_left_end);
+  stretch.right = edge(+1, stretch.reaches_right_end);
+  return stretch;
+}
+
+double width_where_settlement_exceeds(const SettlementProfile& p, double x_centre, double threshold) {
+  return stretch_where_settlement_exceeds(p, x_centre, threshold).width();
+}
+
+EndSettlements end_settlements(const SettlementProfile& p) {
+  EndSettlements ends{nan_value, nan_value};
+  for (std::size_t k = 0; k < p.x.size(); ++k) {
+    if (std::isfinite(p.settlement[k])) {
+      ends.left = p.settlement[k];
+      break;
+    }
+  }
+  for (std::size_t k = p.x.size(); k-- > 0;) {
+    if (std::isfinite(p.settlement[k])) {
+      ends.right = p.settlement[k];
+      break;
+    }
+  }
+  return ends;
 }
 
 }  // namespace trapdem

@@ -18,6 +18,13 @@ struct ZoneOfInfluenceSettings {
   double slab_height_diameters = 2.0;    // slab height of the profiles inside the specimen, in d
   double surface_layer_diameters = 2.0;  // depth below each column's top counted as surface, in d
   std::vector<double> heights;  // m above the trapdoor; empty: 1/4, 1/2 and 3/4 of the layer height
+  // Side-wall warning: a side wall holds the soil next to it up, so where the settlement beside a
+  // wall is a sizeable part of the threshold the zone's edge (and a sinkhole size read from it)
+  // is the box's, not the soil's. Warned when the settlement in the column next to a wall, at the
+  // surface or at one of the heights, is at least this fraction of the threshold. Default 0.5:
+  // on a Gaussian trough (Peck 1969) half the 5 % threshold lies only 0.27 i beyond the zone's
+  // edge at 2.45 i (i the trough width parameter), so the wall is within reach of the edge.
+  double wall_warning_fraction = 0.5;
 };
 
 struct ZoneWidth {
@@ -32,6 +39,14 @@ struct ZoneOfInfluence {
   std::vector<ZoneWidth> widths;  // at the requested heights
   double mid_height_width = 0.0;  // m, at half the layer height
   double shape_ratio = std::numeric_limits<double>::quiet_NaN();  // mid_height_width / B: ~1 columnar, > 1 elliptical
+
+  // The side walls (the outermost columns with nodes stand next to them).
+  double surface_left = 0.0, surface_right = 0.0;  // m, x of the surface zone's edges
+  double wall_left_x = 0.0, wall_right_x = 0.0;    // m, reference x of the outermost nodes
+  double wall_settlement_left = 0.0;   // m, largest settlement in the column next to the left wall
+  double wall_settlement_right = 0.0;  // m (surface and the heights; NaN if no nodes there)
+  bool reaches_wall = false;  // the zone (surface or a height) runs into a side wall's column
+  bool wall_warning = false;  // reaches_wall, or a wall settlement >= wall_warning_fraction * threshold
 };
 
 // Throws InputError if mean_diameter, trapdoor_displacement or the trapdoor width is not positive.

@@ -18,8 +18,21 @@ namespace {
 constexpr double mm = 1000.0;
 const Rgb trapdoor_colour{0.80, 0.10, 0.10};
 
+// The total map shows gamma_max smoothed at the analysis's smoothing length (the field the bands
+// are traced on) when that length is positive, else the unsmoothed triangles.
+bool shows_smoothed(const AnalysisResult& r, StrainKind kind) {
+  return kind == StrainKind::total && r.settings.bands.smoothing_diameters > 0.0 &&
+         r.gamma_max_smoothed.size() == r.gamma_max.size();
+}
+
 const std::vector<double>& strain_values(const AnalysisResult& r, StrainKind kind) {
-  return kind == StrainKind::total ? r.gamma_max : r.gamma_max_incremental;
+  if (kind == StrainKind::incremental) return r.gamma_max_incremental;
+  return shows_smoothed(r, kind) ? r.gamma_max_smoothed : r.gamma_max;
+}
+
+std::string smoothing_text(const AnalysisResult& r) {
+  return fmt::format("smoothed over a Gaussian of {:g} d = {}", r.settings.bands.smoothing_diameters,
+                     format_mm(r.settings.bands.smoothing_diameters * r.mean_diameter));
 }
 
 // Data ranges (mm) for a spatial figure: the box width, from below the lowered trapdoor to just
@@ -90,21 +103,26 @@ std::string view_text(const AnalysisResult& r) {
 void draw_band_traces(cairo_t* cr, const PlotFrame& f, const AnalysisResult& r) {
   cairo_save(cr);
   f.clip(cr);
-  for (const ShearBand* band : {&r.bands.left, &r.bands.right}) {
-    if (band->trace.size() < 2) continue;
-    for (int pass = 0; pass < 2; ++pass) {  // white halo, then a dark dashed line
-      cairo_set_line_width(cr, pass == 0 ? 4.0 : 2.0);
+  // A band's trace: white halo, then a dashed line (bands magenta, their branches orange, thinner).
+  const auto stroke_trace = [&](const std::vector<BandTracePoint>& trace, double width, Rgb colour) {
+    if (trace.size() < 2) return;
+    for (int pass = 0; pass < 2; ++pass) {
+      cairo_set_line_width(cr, pass == 0 ? width + 2.0 : width);
       if (pass == 0) cairo_set_source_rgba(cr, 1, 1, 1, 0.8);
-      else cairo_set_source_rgb(cr, 0.9, 0.1, 0.5);
+      else set_colour(cr, colour);
       const double dash[] = {7.0, 4.0};
       cairo_set_dash(cr, dash, pass == 0 ? 0 : 2, 0.0);
-      for (std::size_t k = 0; k < band->trace.size(); ++k) {
-        const double x = f.px(band->trace[k].x * mm), y = f.py(band->trace[k].z * mm);
+      for (std::size_t k = 0; k < trace.size(); ++k) {
+        const double x = f.px(trace[k].x * mm), y = f.py(trace[k].z * mm);
         if (k == 0) cairo_move_to(cr, x, y);
         else cairo_line_to(cr, x, y);
       }
       cairo_stroke(cr);
     }
+  };
+  for (const ShearBand* band : {&r.bands.left, &r.bands.right}) {
+    stroke_trace(band->trace, 2.0, {0.9, 0.1, 0.5});
+    for (const auto& branch : band->branches) stroke_trace(branch.trace, 1.5, {1.0, 0.55, 0.0});
   }
   cairo_restore(cr);
 }
@@ -195,9 +213,11 @@ void write_strain_map_png(const std::filesystem::path& path, const AnalysisResul
   const PlotFrame f = draw_strain_map(cr, area, r, kind, vmax);
   const std::string what = kind == StrainKind::total ? "maximum shear strain γmax (total)"
                                                      : "accumulated incremental maximum shear strain";
+  const std::string smoothing = shows_smoothed(r, kind) ? "; " + smoothing_text(r) : std::string();
   draw_title(cr, f.pixels().x, 18.0, fmt::format("{}: {}", r.geometry.name, what),
-             fmt::format("{}; strain from {}, drawn on the reference positions\n{}; dashed lines: traced band centres",
-                         displacement_text(r), format_mm(r.reference_displacement), view_text(r)),
+             fmt::format("{}; strain from {}, drawn on the reference positions{}\n{}; dashed lines: traced band "
+                         "centres (orange: branches)",
+                         displacement_text(r), format_mm(r.reference_displacement), smoothing, view_text(r)),
              20.0);
   ColourBarStyle bar{.label = kind == StrainKind::total ? "γmax (-)" : "Σ Δγmax (-)", .extend_high = true};
   draw_colour_bar(cr, {f.pixels().right() + 30.0, f.pixels().y + 20.0, 24.0, f.pixels().h - 20.0},
@@ -315,7 +335,13 @@ void write_strain_panel_png(const std::filesystem::path& path, const std::vector
                               r.trapdoor_travel() / r.geometry.trapdoor.width),
               f.pixels().x + 0.5 * f.pixels().w, f.pixels().y - 6.0, sub);
   }
-  draw_text(cr, "Maximum shear strain γmax (total), one colour scale", 20.0, 16.0,
+  const bool smoothed = !results.empty() && shows_smoothed(*results.front(), StrainKind::total);
+  draw_text(cr,
+            fmt::format("Maximum shear strain γmax (total{}), one colour scale",
+                        smoothed ? fmt::format(", smoothed over a Gaussian of {:g} d",
+                                               results.front()->settings.bands.smoothing_diameters)
+                                 : std::string()),
+            20.0, 16.0,
             TextStyle{.size = 20.0, .bold = true, .v = VAlign::top});
   ColourBarStyle bar{.label = "γmax (-)", .extend_high = true};
   draw_colour_bar(cr, {width - right + 30.0, frame_top + 20.0, 24.0, frame_bottom - frame_top - 20.0},

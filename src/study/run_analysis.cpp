@@ -30,6 +30,7 @@ AnalysisSettings analysis_settings(const AnalyzeOptions& o) {
     s.grid_spacing = parse_length(o.grid, "--grid");
     if (!(s.grid_spacing > 0.0)) throw InputError("--grid must be positive");
   }
+  s.bands.smoothing_diameters = o.smoothing;
   s.incremental = o.incremental;
   return s;
 }

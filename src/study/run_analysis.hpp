@@ -20,6 +20,7 @@ struct AnalyzeOptions {
   std::string front_depth;                 // empty: 1.5 largest diameters
   bool incremental = false;
   std::string grid;                        // empty: half the mean diameter
+  double smoothing = ShearBandSettings{}.smoothing_diameters;  // strain smoothing length, in d (0: none)
   std::vector<std::string> dumps;          // LAMMPS/LIGGGHTS text dumps instead of DIR/snapshots.h5
   std::string displacements;               // "0mm,10mm,..." one per dump
   std::string config;                      // geometry; empty: DIR/resolved.toml

@@ -87,3 +87,38 @@ TEST(ZoneOfInfluence, HeaveAndSmallSettlementDoNotCount) {
   settings.mean_diameter = 0.002;
   EXPECT_THROW(zone_of_influence(points, {0.0, 0.05, 0.0}, settings), std::runtime_error);  // no displacement
 }
+
+// The side-wall warning. A Gaussian trough (i = 0.08 m) in a box 0.3 m wide (walls at about
+// +-0.15 m): beside the walls s = delta exp(-0.15^2 / (2 0.08^2)) = 0.17 delta, above the 5 %
+// threshold: the zone reaches the walls. Narrower (i = 0.02 m): s at the walls ~ 0 and no
+// warning. In between, like the demo (0.8 mm beside the walls at 20 mm of travel: 4 % of it, below
+// the 5 % threshold but above half of it), i = 0.0565 m gives 2.9 % at the walls: a warning,
+// without reaching. Tolerance on the reported wall settlement: 1 % of delta (the outermost
+// column, centred about 1 d in from the wall at 0.148 m, averages nodes over 2 d).
+TEST(ZoneOfInfluence, WarnsWhenTheZoneReachesASideWall) {
+  const double d = 0.002, delta = 0.01, B = 0.05;
+  const auto s = test::make_specimen(-0.15, 0.15, 0.0, 0.1, 44);
+  ZoneOfInfluenceSettings settings;
+  settings.mean_diameter = d;
+  settings.trapdoor_displacement = delta;
+  const auto zone_for = [&](double i) {
+    PointSet2 points;
+    points.position = s.nodes;
+    points.displacement =
+        test::displacements_of(s.nodes, [&](Point2 p) { return Point2{0.0, -delta * std::exp(-0.5 * p.x * p.x / (i * i))}; });
+    return zone_of_influence(points, {0.0, B, 0.0}, settings);
+  };
+  const ZoneOfInfluence wide = zone_for(0.08), narrow = zone_for(0.02), demo_like = zone_for(0.0565);
+  EXPECT_TRUE(wide.reaches_wall);
+  EXPECT_TRUE(wide.wall_warning);
+  EXPECT_NEAR(wide.wall_settlement_left, delta * std::exp(-0.5 * 0.148 * 0.148 / (0.08 * 0.08)), 0.01 * delta);
+  EXPECT_NEAR(wide.wall_settlement_right, wide.wall_settlement_left, 0.01 * delta);
+  EXPECT_FALSE(narrow.reaches_wall);
+  EXPECT_FALSE(narrow.wall_warning);
+  EXPECT_LT(narrow.wall_settlement_left, 0.001 * delta);
+  EXPECT_FALSE(demo_like.reaches_wall);
+  EXPECT_TRUE(demo_like.wall_warning);
+  report("demo-like wall settlement / travel (%)", 100.0 * demo_like.wall_settlement_left / delta, 5.0);
+  EXPECT_GT(demo_like.wall_settlement_left, 0.5 * 0.05 * delta);
+  EXPECT_LT(demo_like.wall_settlement_left, 0.05 * delta);
+}
