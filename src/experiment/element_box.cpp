@@ -36,8 +36,8 @@ Vec3 ElementBox::centre(const Simulation& sim) const {
   return c;
 }
 
-ContactLaw frictionless_wall_law(const ContactLaw& particle_law) {
-  ContactLaw law = particle_law;
+ContactLaw frictionless(const ContactLaw& with_friction) {
+  ContactLaw law = with_friction;
   law.static_friction = 0.0;
   law.kinetic_friction = 0.0;
   law.rolling_friction = 0.0;

@@ -23,9 +23,10 @@ struct ElementBox {
   Vec3 centre(const Simulation& sim) const;
 };
 
-// The law of the box walls: the particles' stiffness and restitution, no friction and no rolling
-// resistance (the issue's frictionless walls: the walls' shear would add to the stress ratio).
-ContactLaw frictionless_wall_law(const ContactLaw& particle_law);
+// A law with the same stiffness and restitution but no friction and no rolling resistance: the
+// box walls' (frictionless, as the issue asks: their shear would add to the stress ratio) and the
+// dense specimen's during its compression.
+ContactLaw frictionless(const ContactLaw& law);
 
 // Adds the six planes bounding [lower, upper] to the simulation.
 ElementBox add_box_walls(Simulation& sim, const Vec3& lower, const Vec3& upper, const ContactLaw& wall_law);

@@ -24,6 +24,7 @@ constexpr double kStressTolerance = 0.005;
 constexpr double kRestFraction = 1.0;
 constexpr int kWindowSteps = 500;        // steps of an equilibrium check window
 constexpr int kStressSampleEvery = 10;   // steps between Love-Weber and coordination samples
+constexpr double kRampStrain = 0.001;    // axial strain over which the shear's wall speed is reached
 
 SimulationSettings simulation_settings(const ElementSetup& setup, double side) {
   SimulationSettings s;
@@ -40,13 +41,7 @@ SimulationSettings simulation_settings(const ElementSetup& setup, double side) {
 // The law the gas is compressed with: no friction and no rolling resistance for the dense
 // specimen, the particles' own for the loose one.
 ContactLaw preparation_law(const ContactLaw& law, Packing packing) {
-  if (packing == Packing::loose) return law;
-  ContactLaw frictionless = law;
-  frictionless.static_friction = 0.0;
-  frictionless.kinetic_friction = 0.0;
-  frictionless.rolling_friction = 0.0;
-  frictionless.rolling_model = RollingModel::none;
-  return frictionless;
+  return packing == Packing::loose ? law : frictionless(law);
 }
 
 double rms_velocity(const Simulation& sim) {
@@ -150,7 +145,7 @@ ElementSpecimen prepare_specimen(const ElementSetup& setup, Packing packing, dou
   sp.sim = std::make_unique<Simulation>(std::move(gas), preparation_law(setup.material.particle, packing),
                                         simulation_settings(setup, side));
   sp.sim->set_gravity(Vec3{});  // an element of soil: no body force
-  sp.box = add_box_walls(*sp.sim, Vec3{}, Vec3{side, side, side}, frictionless_wall_law(setup.material.particle));
+  sp.box = add_box_walls(*sp.sim, Vec3{}, Vec3{side, side, side}, frictionless(setup.material.particle));
 
   // Walls close in at most at the preparation strain rate (each wall at half of it times the side).
   const double rate = preparation_strain_rate(setup, confining);
@@ -187,8 +182,17 @@ SpecimenResult shear_specimen(ElementSpecimen& sp, const ElementSetup& setup, co
   const double h0 = sp.box.length(sim, 2);
   const double v0 = sp.box.volume(sim);
   const double wall_speed = 0.5 * r.strain_rate * h0;
-  set_wall_velocity(sim, sp.box.wall[2][0], Vec3{0.0, 0.0, wall_speed});
-  set_wall_velocity(sim, sp.box.wall[2][1], Vec3{0.0, 0.0, -wall_speed});
+  // The axial walls reach their speed over a ramp of 0.1 % of axial strain (at the full rate it
+  // would take half as long). Started at once, they would send a stress wave of about
+  // rho c v ~ 1500 kg/m^3 x 800 m/s x 0.045 m/s ~ 50 kPa through the stiff specimen: the lateral
+  // servo then missed its target by 1.5 % over the first row (1000-sphere specimens). The ramp
+  // spans ~20 wave crossings of such a specimen.
+  const double ramp_time = 2.0 * kRampStrain / r.strain_rate;
+  auto set_axial_speed = [&](double speed) {
+    set_wall_velocity(sim, sp.box.wall[2][0], Vec3{0.0, 0.0, speed});
+    set_wall_velocity(sim, sp.box.wall[2][1], Vec3{0.0, 0.0, -speed});
+  };
+  set_axial_speed(0.0);
   // The lateral walls may move at up to twice the axial rate each (a lateral strain rate of four
   // times the axial one: far above the steepest dilation).
   const double lateral_cap = 2.0 * r.strain_rate * sp.box.length(sim, 0);
@@ -198,7 +202,8 @@ SpecimenResult shear_specimen(ElementSpecimen& sp, const ElementSetup& setup, co
     set_wall_velocity(sim, sp.box.wall[1][1], Vec3{});
   }
   const int servo_axes = biaxial ? 1 : 2;
-  const auto total_steps = static_cast<std::int64_t>(std::ceil(e.max_axial_strain / (r.strain_rate * sim.time_step())));
+  const auto total_steps = static_cast<std::int64_t>(
+      std::ceil((e.max_axial_strain + kRampStrain) / (r.strain_rate * sim.time_step())));
   const double d = setup.material.sizes.mean_diameter();
 
   // Row accumulators.
@@ -208,7 +213,14 @@ SpecimenResult shear_specimen(ElementSpecimen& sp, const ElementSetup& setup, co
     int n = 0, n_sampled = 0;
   } sum;
   double next_row = e.row_strain;
+  const double t0 = sim.time();
+  bool ramping = true;
   for (std::int64_t step = 0; step < total_steps; ++step) {
+    if (ramping) {
+      const double fraction = std::min(1.0, (sim.time() - t0 + 0.5 * sim.time_step()) / ramp_time);
+      set_axial_speed(fraction * wall_speed);
+      ramping = fraction < 1.0;
+    }
     sim.step();
     const std::vector<int> contacts = wall_contact_counts(sim);
     for (int a = 0; a < servo_axes; ++a) servo[a].update(sim, sp.box, a, contacts);
@@ -222,7 +234,8 @@ SpecimenResult shear_specimen(ElementSpecimen& sp, const ElementSetup& setup, co
       sum.z += coordination_number(sim);
       ++sum.n_sampled;
     }
-    if (eps_a >= next_row || step + 1 == total_steps) {
+    const bool last = step + 1 == total_steps || eps_a >= e.max_axial_strain;
+    if (eps_a >= next_row || last) {
       ElementRow row;
       row.axial_strain = sum.eps_a / sum.n;
       row.volumetric_strain = sum.eps_v / sum.n;
@@ -246,6 +259,7 @@ SpecimenResult shear_specimen(ElementSpecimen& sp, const ElementSetup& setup, co
                         to_string(sp.packing), sp.confining, 100.0 * row.axial_strain, row.sin_phi,
                         std::asin(std::clamp(row.sin_phi, -1.0, 1.0)) * kDegree, 100.0 * row.volumetric_strain,
                         row.coordination, row.inertial_number));
+      if (last) break;
     }
   }
   summarise_specimen(r, e.critical_state_window);
