@@ -1,5 +1,5 @@
 // The virtual element test's physics at large strain (slow: each specimen is sheared to 25 %
-// axial strain; about ten minutes in all on two cores). Label: this program is test_experiment_slow,
+// axial strain; about ten minutes with ctest -j2). Label: this program is test_experiment_slow,
 // excluded from `make test` (-LE slow: the label experiment_slow matches) and run by
 // `make test-slow` (-L slow).
 //
@@ -7,12 +7,13 @@
 //    bead packs have macroscopic friction, but no dilatancy", Phys. Rev. E 78, 011307, find an
 //    internal friction angle of about 5.8 deg (friction coefficient ~0.1) for nearly rigid
 //    frictionless beads in quasi-static shear, independent of pressure, at the random close packing
-//    density (no dilatancy). Our biaxial test at I = 1e-3 must land near it: 3-9 deg (the
-//    quasi-static limit is approached from above as a power of I, and a 1500-sphere specimen
+//    density (no dilatancy). Our biaxial test at I = 2e-3 must land near it: 3-9 deg (the
+//    quasi-static limit is approached from above as a power of I, and a 1000-sphere specimen
 //    scatters by about a degree), with a volume change of at most a few per cent.
 // 2. The critical-state angle grows with the sliding friction mu (0.1, 0.3, 0.6; no rolling
 //    resistance) and with the rolling resistance mu_r at mu = 0.3 (0, 0.1, 0.3): each step by more
-//    than the scatter of phi'_cs over the last 5 % of strain. Goncu & Luding (2013, Acta
+//    than the rows' scatter of phi'_cs over the last 5 % of strain (mu 0.3 to 0.6 merely higher:
+//    near saturation). Goncu & Luding (2013, Acta
 //    Geotechnica 8, 629-643) show the first trend (rising, then saturating above mu ~ 0.5), Estrada
 //    et al. (2011, Phys. Rev. E 84, 011306) the second.
 #include <cmath>
@@ -30,8 +31,8 @@
 namespace trapdem {
 namespace {
 
-// 2 mm beads on the presets' spring, 1500 of them: large enough that phi'_cs scatters by about a
-// degree, small enough for a test. Sheared at I = 2e-3: by the mu(I) rule (Jop et al. 2006,
+// 2 mm beads on the presets' spring, 1000 of them (docs/element.md: phi'_cs scatters by about a
+// degree between seeds at this size). Sheared at I = 2e-3: by the mu(I) rule (Jop et al. 2006,
 // mu(I) - mu_s ~ (mu_2 - mu_s) I / I_0 = 0.26 I / 0.28) that adds ~0.1 deg to phi'_cs.
 SpecimenResult compute_critical_state(double mu, double mu_r) {
   const std::string text = fmt::format(
@@ -52,7 +53,7 @@ SpecimenResult compute_critical_state(double mu, double mu_r) {
       "[pluviation]\n"
       "count = 1000\n"
       "[element]\n"
-      "particles = 1500\n"
+      "particles = 1000\n"
       "max_axial_strain = 0.25\n"
       "inertial_number = 2e-3\n",
       mu, mu_r, mu_r > 0.0 ? "constant_torque" : "none");
