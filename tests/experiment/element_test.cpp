@@ -11,6 +11,7 @@
 #include <omp.h>
 
 #include "dem/errors.hpp"
+#include "element_test_config.hpp"
 #include "experiment/element_config.hpp"
 #include "experiment/element_servo.hpp"
 #include "experiment/element_stress.hpp"
@@ -20,25 +21,9 @@
 namespace trapdem {
 namespace {
 
-// A run configuration as the element test reads it: 2 mm beads on the presets' spring, a short
-// pour (the run needs one; the element test ignores it), and a few hundred particles.
-const char* kBase =
-    "name = \"element-fast\"\n"
-    "[particles]\n"
-    "density = 2500.0\n"
-    "size = \"uniform\"\n"
-    "min_diameter = 0.0019\n"
-    "max_diameter = 0.0021\n"
-    "[contact]\n"
-    "normal_stiffness = 1.0e6\n"
-    "tangential_stiffness = 5.0e5\n"
-    "restitution = 0.9\n"
-    "static_friction = 0.3\n"
-    "kinetic_friction = 0.3\n"
-    "[pluviation]\n"
-    "count = 1000\n"
-    "[element]\n"
-    "particles = 300\n";
+// The shared test configuration (element_test_config.hpp) with mu = 0.3 and a few hundred
+// particles; the next key appended goes on line 19.
+const std::string kBase = element_test_config("element-fast", 0.3, 0.0) + "particles = 300\n";
 
 ElementSetup setup_from(const std::string& text, const std::vector<std::string>& overrides = {}) {
   Config c = Config::parse(text, "element.toml");
@@ -72,7 +57,7 @@ TEST(ElementConfig, ReadsTheElementKeysAndTheRunConfigurationsMaterial) {
 
 TEST(ElementConfig, RefusesANonPositiveConfiningStressNamingTheKeyAndLine) {
   const std::string in_file = error_of(std::string(kBase) + "confining = [50e3, -10.0]\n");
-  EXPECT_NE(in_file.find("element.toml:17:"), std::string::npos) << in_file;
+  EXPECT_NE(in_file.find("element.toml:19:"), std::string::npos) << in_file;
   EXPECT_NE(in_file.find("element.confining"), std::string::npos) << in_file;
   EXPECT_NE(in_file.find("> 0 (Pa)"), std::string::npos) << in_file;
   const std::string zero = error_of(kBase, {"element.confining=[0.0]"});
@@ -92,7 +77,7 @@ TEST(ElementConfig, RefusesAConfigurationWithoutParticles) {
 TEST(ElementConfig, RefusesUnknownElementKeysAndBadChoices) {
   const std::string unknown = error_of(std::string(kBase) + "confinement = 5e4\n");
   EXPECT_NE(unknown.find("element.confinement"), std::string::npos) << unknown;
-  EXPECT_NE(unknown.find("element.toml:17"), std::string::npos) << unknown;
+  EXPECT_NE(unknown.find("element.toml:19"), std::string::npos) << unknown;
   const std::string test = error_of(kBase, {"element.test=shear"});
   EXPECT_NE(test.find("element.test"), std::string::npos) << test;
   EXPECT_NE(test.find("triaxial"), std::string::npos) << test;

@@ -24,6 +24,7 @@
 #include <fmt/format.h>
 #include <gtest/gtest.h>
 
+#include "../experiment/element_test_config.hpp"
 #include "experiment/element_config.hpp"
 #include "experiment/element_test.hpp"
 #include "io/config.hpp"
@@ -35,28 +36,10 @@ namespace {
 // degree between seeds at this size). Sheared at I = 2e-3: by the mu(I) rule (Jop et al. 2006,
 // mu(I) - mu_s ~ (mu_2 - mu_s) I / I_0 = 0.26 I / 0.28) that adds ~0.1 deg to phi'_cs.
 SpecimenResult compute_critical_state(double mu, double mu_r) {
-  const std::string text = fmt::format(
-      "name = \"element-slow\"\n"
-      "[particles]\n"
-      "density = 2500.0\n"
-      "size = \"uniform\"\n"
-      "min_diameter = 0.0019\n"
-      "max_diameter = 0.0021\n"
-      "[contact]\n"
-      "normal_stiffness = 1.0e6\n"
-      "tangential_stiffness = 5.0e5\n"
-      "restitution = 0.9\n"
-      "static_friction = {0}\n"
-      "kinetic_friction = {0}\n"
-      "rolling_friction = {1}\n"
-      "rolling_model = \"{2}\"\n"
-      "[pluviation]\n"
-      "count = 1000\n"
-      "[element]\n"
-      "particles = 1000\n"
-      "max_axial_strain = 0.25\n"
-      "inertial_number = 2e-3\n",
-      mu, mu_r, mu_r > 0.0 ? "constant_torque" : "none");
+  const std::string text = element_test_config("element-slow", mu, mu_r) +
+                           "particles = 1000\n"
+                           "max_axial_strain = 0.25\n"
+                           "inertial_number = 2e-3\n";
   Config c = Config::parse(text, "element-slow.toml");
   const ElementSetup setup = read_element_setup(c);
   // The loose specimen reaches the critical state without a peak to cross: the cheaper one.
