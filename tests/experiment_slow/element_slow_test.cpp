@@ -10,10 +10,9 @@
 //    density (no dilatancy). Our biaxial test at I = 2e-3 must land near it: 3-9 deg (the
 //    quasi-static limit is approached from above as a power of I, and a 1000-sphere specimen
 //    scatters by about a degree), with a volume change of at most a few per cent.
-// 2. The critical-state angle grows with the sliding friction mu (0.1, 0.3, 0.6; no rolling
-//    resistance) and with the rolling resistance mu_r at mu = 0.3 (0, 0.1, 0.3): each step by more
-//    than the rows' scatter of phi'_cs over the last 5 % of strain (mu 0.3 to 0.6 merely higher:
-//    near saturation). Goncu & Luding (2013, Acta
+// 2. The critical-state angle grows with the sliding friction mu (0.05, 0.15, 0.3; no rolling
+//    resistance; above ~0.3 it saturates) and with the rolling resistance mu_r at mu = 0.3 (0, 0.1,
+//    0.3): each step by more than the rows' scatter of phi'_cs over the last 5 % of strain. Goncu & Luding (2013, Acta
 //    Geotechnica 8, 629-643) show the first trend (rising, then saturating above mu ~ 0.5), Estrada
 //    et al. (2011, Phys. Rev. E 84, 011306) the second.
 #include <cmath>
@@ -68,11 +67,12 @@ TEST(ElementSlow, FrictionlessSpheresHaveASmallCriticalStateAngleAndNoDilatancy)
 }
 
 TEST(ElementSlow, CriticalStateAngleGrowsWithSlidingFriction) {
-  const SpecimenResult& low = loose_critical_state(0.1, 0.0);
-  const SpecimenResult& mid = loose_critical_state(0.3, 0.0);
-  const SpecimenResult& high = loose_critical_state(0.6, 0.0);
+  // Below the saturation: mu 0.1, 0.3, 0.6 gave 15.4, 20.5, 20.5 deg (0.3 to 0.6 within the scatter).
+  const SpecimenResult& low = loose_critical_state(0.05, 0.0);
+  const SpecimenResult& mid = loose_critical_state(0.15, 0.0);
+  const SpecimenResult& high = loose_critical_state(0.3, 0.0);
   EXPECT_GT(mid.phi_cs - low.phi_cs, std::max(low.phi_cs_scatter, mid.phi_cs_scatter));
-  EXPECT_GT(high.phi_cs - mid.phi_cs, 0.0);
+  EXPECT_GT(high.phi_cs - mid.phi_cs, std::max(mid.phi_cs_scatter, high.phi_cs_scatter));
 }
 
 TEST(ElementSlow, CriticalStateAngleGrowsWithRollingResistance) {
