@@ -8,6 +8,7 @@
 #include "calibrate_command.hpp"
 #include "compare_command.hpp"
 #include "core/errors.hpp"
+#include "element_command.hpp"
 #include "piv_command.hpp"
 #include "run_command.hpp"
 #include "showcase.hpp"
@@ -156,6 +157,20 @@ int main(int argc, char** argv) {
       ->check(CLI::NonNegativeNumber);
   cal->add_flag("--quiet", calibrate.quiet, "Runs' progress lines only in their run.log");
 
+  trapdem::app::ElementOptions element;
+  auto* el = app.add_subcommand("element", "Virtual element test: friction angles of a configuration's particles (docs/element.md)");
+  el->add_option("config", element.config_file, "Run configuration (TOML); default: the demo preset")->check(CLI::ExistingFile);
+  el->add_option("--preset", element.preset, "Use a preset's particles and contact law");
+  el->add_option("--test", element.test, "biaxial (plane strain, default) or triaxial")
+      ->check(CLI::IsMember({"biaxial", "triaxial"}));
+  el->add_option("--confining", element.confining, "Confining stress(es), Pa: 50e3 or 25e3,50e3,100e3 (default 50e3)")
+      ->delimiter(',');
+  el->add_option("--out", element.out_dir, "Output folder (default ./trapdem-out/element-<name>)");
+  el->add_option("--set", element.overrides, "Override a key: --set element.particles=2000 (repeatable)");
+  el->add_option("--threads", element.threads, "OpenMP threads (default: numerics.threads, else all cores)")
+      ->check(CLI::NonNegativeNumber);
+  el->add_flag("--quiet", element.quiet, "No progress lines on the terminal (element.log keeps them)");
+
   CLI11_PARSE(app, argc, argv);
   try {
     if (run_cmd->parsed()) return trapdem::app::run_experiment(run);
@@ -170,6 +185,7 @@ int main(int argc, char** argv) {
     if (sink->parsed()) return trapdem::app::run_sinkhole(sinkhole);
     if (study_cmd->parsed()) return trapdem::app::run_study(study);
     if (cal->parsed()) return trapdem::app::run_calibrate(calibrate);
+    if (el->parsed()) return trapdem::app::run_element(element);
   } catch (const trapdem::InputError& e) {
     fmt::print(stderr, "trapdem: input error: {}\n", e.what());
     return 2;

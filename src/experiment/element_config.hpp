@@ -1,0 +1,61 @@
+#pragma once
+// The virtual element test's settings (issue 17): which test, at which confining stresses, with
+// how many particles, how fast, and the material taken from a run configuration's [particles] and
+// [contact] (read by ExperimentConfig, not parsed again). The test's own keys live in an optional
+// [element] table of the same document and are read strictly (docs/element.md lists them).
+#include <cstdint>
+#include <string>
+#include <vector>
+
+#include "experiment/experiment_config.hpp"
+
+namespace trapdem {
+
+class Config;
+
+enum class ElementTestKind {
+  biaxial,   // plane strain: the y walls fixed, the x walls hold the confining stress (the paper's slab)
+  triaxial,  // axisymmetric stresses: the x and y walls hold the confining stress
+};
+const char* to_string(ElementTestKind kind);
+
+struct ElementSettings {
+  ElementTestKind kind = ElementTestKind::biaxial;
+  // Pa. Default: about the mean stress at mid-depth of the trapdoor model at 50 g (docs/element.md:
+  // 37-90 kPa depending on the wall friction carried, ~50 kPa in the demo's box).
+  std::vector<double> confining{50.0e3};
+  std::int64_t particles = 4000;           // in the specimen (docs/element.md: the size and the scatter)
+  // Shear at the constant axial strain rate that gives this inertial number at the confining
+  // stress, I = eps_dot d_mean / sqrt(sigma_c / rho_s); below 1e-3 is quasi-static (GDR MiDi 2004).
+  double inertial_number = 1.0e-3;
+  // The isotropic compression from the granular gas is ten times faster (its walls' speed cap):
+  // the density is set by the friction during it, not by its rate.
+  double preparation_inertial_number = 1.0e-2;
+  double max_axial_strain = 0.30;          // end of the shear
+  double row_strain = 0.0025;              // axial strain between rows of element.csv (each row an average)
+  double critical_state_window = 0.05;     // phi'_cs: the mean over the last this much axial strain
+  double gas_solid_fraction = 0.30;        // the random gas the specimen is compressed from
+  std::uint64_t seed = 1;                  // placement of the gas (dense and loose share it)
+};
+
+// What the element test needs: its settings and the run configuration's material and numerics.
+struct ElementSetup {
+  std::string name;                        // the run configuration's name
+  ElementSettings settings;
+  MaterialConfig material;                 // density, sizes, particle-particle law (walls: frictionless)
+  double time_step = 0.0;                  // s, as the run configuration's numerics give it
+  double skin = 0.0;                       // m
+  double max_overlap_fraction = 0.25;
+  int threads = 0;                         // numerics.threads (0: all cores)
+};
+
+// Reads [element] (strictly), checks that the document has its particles ([particles]) and reads
+// the run configuration with ExperimentConfig::from (which reports every unknown key, file:line).
+// Throws InputError naming the file, key and what was expected.
+ElementSetup read_element_setup(Config& config);
+
+// The strain rate (1/s) of the shear at confining stress `sigma_c` (Pa) and of the preparation.
+double shear_strain_rate(const ElementSetup& setup, double sigma_c);
+double preparation_strain_rate(const ElementSetup& setup, double sigma_c);
+
+}  // namespace trapdem
