@@ -2,7 +2,7 @@
 // servo holds the confining stress, the contact (Love-Weber) stress equals the wall stress at
 // rest, the angles are read correctly off the curves, and bad inputs are refused clearly. The
 // frictionless critical state and the trend with mu and mu_r take thousands of particles to large
-// strain: tests/experiment_slow/element_slow_test.cpp.
+// strain: tests/experiment/slow/element_slow_test.cpp.
 #include <cmath>
 #include <numbers>
 #include <string>

@@ -1,7 +1,6 @@
 // The virtual element test's physics at large strain (slow: each specimen is sheared to 25 %
-// axial strain; about ten minutes with ctest -j2). Label: this program is test_experiment_slow,
-// excluded from `make test` (-LE slow: the label experiment_slow matches) and run by
-// `make test-slow` (-L slow).
+// axial strain; about ten minutes with ctest -j2). In tests/experiment/slow: program
+// test_experiment_slow, label slow, excluded from `make test` and run by `make test-slow`.
 //
 // 1. Frictionless spheres still have a macroscopic friction: Peyneau & Roux (2008), "Frictionless
 //    bead packs have macroscopic friction, but no dilatancy", Phys. Rev. E 78, 011307, find an
@@ -23,7 +22,7 @@
 #include <fmt/format.h>
 #include <gtest/gtest.h>
 
-#include "../experiment/element_test_config.hpp"
+#include "../element_test_config.hpp"
 #include "experiment/element_config.hpp"
 #include "experiment/element_test.hpp"
 #include "io/config.hpp"
