@@ -88,6 +88,7 @@ std::string from_report(const SinkholeOptions& o) {
   s += fmt::format("    {} deg from the shear bands (left {}, right {}; degrees to the vertical, + outward)\n",
                    num(c.angle_from_bands_deg, "{:.1f}"), num(run.band_left_deg, "{:.1f}"),
                    num(run.band_right_deg, "{:.1f}"));
+  for (const std::string& w : run.warnings) s += fmt::format("\nWARNING: {}\n", w);
   return s;
 }
 

@@ -78,6 +78,9 @@ struct DemRunGeometry {
   double travel = 0.0;               // m, trapdoor travel analysed (trapdoor.travel_m)
   double band_left_deg = 0.0;        // band angles to the vertical, positive outward (NaN if not found)
   double band_right_deg = 0.0;
+  // The analysis' warnings (metrics.json `warnings`), e.g. a zone of influence that reaches a side
+  // wall: the surface zone, and so the DEM sinkhole size, is then bounded by the box, not the soil.
+  std::vector<std::string> warnings;
 };
 
 struct MechanismComparison {

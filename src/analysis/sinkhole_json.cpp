@@ -37,6 +37,9 @@ Json to_json(const MechanismComparison& c) {
   model.set("surface_zone_width_m", c.run.surface_zone_width);
   model.set("band_left_angle_deg", c.run.band_left_deg);
   model.set("band_right_angle_deg", c.run.band_right_deg);
+  Json warnings = Json::array();
+  for (const std::string& w : c.run.warnings) warnings.push_back(w);
+  model.set("warnings", warnings);
   j.set("model", model);
 
   Json dem = Json::object();

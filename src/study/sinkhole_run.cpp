@@ -58,6 +58,9 @@ DemRunGeometry read_dem_run(const fs::path& dir) {
   const Json& bands = json_member_or_null(m, "shear_bands");
   g.band_left_deg = json_number_or_nan(json_member_or_null(bands, "left"), "angle_deg");
   g.band_right_deg = json_number_or_nan(json_member_or_null(bands, "right"), "angle_deg");
+  const Json& warnings = json_member_or_null(m, "warnings");
+  for (std::size_t k = 0; warnings.type() == Json::Type::array && k < warnings.size(); ++k)
+    g.warnings.push_back(warnings[k].as_string());
   return g;
 }
 

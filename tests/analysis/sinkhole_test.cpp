@@ -33,7 +33,7 @@ fs::path fresh_dir(const std::string& name) {
 
 // A run folder with only what `sinkhole --from` reads: N = 40, B = 50 mm, fill 150 mm, a surface zone
 // 200 mm wide and bands at 10 and 20 degrees.
-fs::path synthetic_run(const std::string& name, bool with_surface_height = true) {
+fs::path synthetic_run(const std::string& name, bool with_surface_height = true, const std::string& warning = "") {
   const fs::path dir = fresh_dir(name);
   std::ofstream(dir / "resolved.toml") << "name = \"tiny\"\n[spin_up]\ng_level = 40.0\n[trapdoor]\nwidth = 0.05\n"
                                           "[pluviation]\nfill_height = 0.15\n";
@@ -42,7 +42,8 @@ fs::path synthetic_run(const std::string& name, bool with_surface_height = true)
          " \"shear_bands\": {\"left\": {\"angle_deg\": 10.0}, \"right\": {\"angle_deg\": 20.0}},\n"
          " \"zone_of_influence\": {\"settlement_fraction\": 0.05, "
       << (with_surface_height ? "\"surface_height_m\": 0.16, " : "\"surface_height_m\": null, ")
-      << "\"surface_width_m\": 0.2}}\n";
+      << "\"surface_width_m\": 0.2}"
+      << (warning.empty() ? std::string() : ", \"warnings\": [\"" + warning + "\"]") << "}\n";
   return dir;
 }
 
@@ -215,4 +216,26 @@ TEST(SinkholeCommand, FromRun) {
   EXPECT_NEAR(j["mechanism"]["surface_diameter_m"].as_number(), 8.0, 1e-12);
   EXPECT_NEAR(j["ratio_supposition_over_mechanism"].as_number(), (2.0 + 12.8 * kTan30) / 8.0, 1e-9);
   fs::remove_all(dir);
+}
+
+// The analysis' side-wall warning travels with the run's estimate: a zone bounded by the box gives a
+// DEM sinkhole size bounded by the box, and the reader must be told so beside the number.
+TEST(SinkholeCommand, FromRunCarriesTheAnalysisWarnings) {
+  const std::string warning = "the zone of influence reaches the left side wall";
+  const fs::path dir = synthetic_run("warning", true, warning);
+  app::SinkholeOptions o;
+  o.from = dir.string();
+  o.layers = {":30"};
+  const std::string text = app::sinkhole_report(o);
+  EXPECT_NE(text.find("WARNING: " + warning), std::string::npos) << text;
+  o.json = true;
+  const Json j = Json::parse(app::sinkhole_report(o));
+  ASSERT_EQ(j["model"]["warnings"].size(), 1u);
+  EXPECT_EQ(j["model"]["warnings"][0].as_string(), warning);
+  fs::remove_all(dir);
+  const fs::path quiet = synthetic_run("nowarning");
+  o.from = quiet.string();
+  o.json = false;
+  EXPECT_EQ(app::sinkhole_report(o).find("WARNING"), std::string::npos);
+  fs::remove_all(quiet);
 }
