@@ -40,8 +40,9 @@ struct PivFigureInput {
   std::string title;     // first line of each figure's title
 };
 
-// Writes shear_strain.png, vertical_displacement.png, vectors.png and correlation_quality.png to
-// `dir`; returns the files written.
+// Writes shear_strain.png, shear_strain_incremental.png, vertical_displacement.png, vectors.png and
+// correlation_quality.png to `dir`, drawn by src/plot/piv_figures.hpp from the result converted to
+// plain data; returns the files written.
 std::vector<std::filesystem::path> write_piv_figures(const std::filesystem::path& dir, const PivFigureInput& input);
 
 // An image as 8-bit grey for figure backgrounds (any depth or channel count).

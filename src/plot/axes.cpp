@@ -23,6 +23,15 @@ double nice_step(double span, int max_count) {
   return 10.0 * power;
 }
 
+double nice_ceiling(double value) {
+  if (!(value > 0.0)) return 1.0;
+  const double p = std::pow(10.0, std::floor(std::log10(value)));
+  for (double m : {1.0, 2.0, 2.5, 5.0, 10.0}) {
+    if (m * p >= value) return m * p;
+  }
+  return 10.0 * p;
+}
+
 std::vector<double> nice_ticks(double lo, double hi, int max_count) {
   std::vector<double> ticks;
   if (!(hi > lo)) return ticks;

@@ -36,6 +36,10 @@ class PlotFrame {
 std::vector<double> nice_ticks(double lo, double hi, int max_count);
 double nice_step(double span, int max_count);
 
+// The top of a colour scale: the smallest of 1, 2, 2.5 or 5 x 10^k at or above `value` (values
+// above it saturate); 1 if `value` is not positive (or NaN).
+double nice_ceiling(double value);
+
 // A number for a tick label: no trailing zeros, as many decimals as the step needs.
 std::string format_tick(double value, double step);
 

@@ -142,13 +142,7 @@ constexpr double left_margin = 95.0, bottom_margin = 80.0;
 }  // namespace
 
 double auto_strain_scale(const AnalysisResult& r, StrainKind kind) {
-  const double q = quantile(strain_values(r, kind), 0.95);
-  if (!(q > 0.0)) return 1.0;
-  const double p = std::pow(10.0, std::floor(std::log10(q)));
-  for (double m : {1.0, 2.0, 2.5, 5.0, 10.0}) {
-    if (m * p >= q) return m * p;
-  }
-  return 10.0 * p;
+  return nice_ceiling(quantile(strain_values(r, kind), 0.95));
 }
 
 PlotFrame draw_strain_map(cairo_t* cr, Rect area, const AnalysisResult& r, StrainKind kind, double vmax,

@@ -2,14 +2,12 @@
 // distinct colours (a colour map, text, lines), counted in the decoded image.
 #include <gtest/gtest.h>
 
-#include <cairo.h>
-
 #include <cmath>
 #include <filesystem>
 #include <numbers>
-#include <set>
 
 #include "../analysis/synthetic_points.hpp"
+#include "png_image.hpp"
 #include "analysis/analysis_run.hpp"
 #include "plot/colour_map.hpp"
 #include "plot/line_chart.hpp"
@@ -26,22 +24,8 @@ struct PngInfo {
 };
 
 PngInfo inspect(const fs::path& path) {
-  cairo_surface_t* s = cairo_image_surface_create_from_png(path.c_str());
-  PngInfo info;
-  if (cairo_surface_status(s) == CAIRO_STATUS_SUCCESS) {
-    info.width = cairo_image_surface_get_width(s);
-    info.height = cairo_image_surface_get_height(s);
-    const int stride = cairo_image_surface_get_stride(s);
-    const unsigned char* data = cairo_image_surface_get_data(s);
-    std::set<std::uint32_t> colours;
-    for (int y = 0; y < info.height; ++y) {
-      const auto* row = reinterpret_cast<const std::uint32_t*>(data + y * stride);
-      for (int x = 0; x < info.width; ++x) colours.insert(row[x] & 0xffffff);
-    }
-    info.colours = colours.size();
-  }
-  cairo_surface_destroy(s);
-  return info;
+  const test::PngImage image = test::read_png(path);
+  return {image.width, image.height, image.colours()};
 }
 
 // A small analysed specimen: a settling block between two bands leaning out at 15 degrees.
