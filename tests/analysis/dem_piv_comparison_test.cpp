@@ -1,22 +1,15 @@
-// trapdem compare: DEM and PIV vertical displacement on one grid and the RMS error over the common
-// area (src/analysis/dem_piv_comparison.hpp, apps/compare_command.hpp).
+// DEM against PIV on one grid (src/analysis/dem_piv_comparison.hpp): the common grid, the RMS error
+// over the common area, the snapshot index in a rendered image's name. Reading piv.h5 as the PIV
+// module writes it: tests/piv/piv_h5_reading_test.cpp; two folders compared: tests/study.
 #include <gtest/gtest.h>
 
 #include <cmath>
-#include <filesystem>
-#include <fmt/format.h>
-#include <optional>
 
 #include "analysis/dem_piv_comparison.hpp"
-#include "compare_command.hpp"
 #include "core/errors.hpp"
-#include "piv/piv_output.hpp"
-#include "synthetic_run.hpp"
 
 namespace trapdem {
 namespace {
-
-namespace fs = std::filesystem;
 
 // A linear settlement field (exact under linear interpolation on any triangulation): w < 0 down.
 double settlement_w(Point2 p, double delta) { return -delta * (0.8 - 2.0 * (p.z - 0.02) + 1.5 * (p.x - 0.1)); }
@@ -69,114 +62,6 @@ TEST(DemPivComparison, RenderedImageNamesGiveTheSnapshotIndex) {
   EXPECT_EQ(rendered_snapshot_index("012_2.5mm.png"), 12);
   EXPECT_EQ(rendered_snapshot_index("IMG_0004.JPG"), -1);
   EXPECT_EQ(rendered_snapshot_index("image_001.png"), -1);
-}
-
-// piv.h5 written by the PIV module's own writer: a 0.5 mm/px camera over the synthetic box
-// (pixel (0, 0) at model (0, 140) mm), subsets every 8 px moved by the settlement field (+ offset).
-void write_synthetic_piv(const fs::path& dir, const std::vector<double>& deltas, double offset_m) {
-  fs::create_directories(dir);
-  const double s = 0.5;  // mm per px
-  PivResult r;
-  r.grid.subset_size = 16;
-  r.grid.step = 8;
-  for (int y = 8; y <= 272; y += 8) {
-    for (int x = 8; x <= 392; x += 8) r.grid.centre.push_back({double(x), double(y)});
-  }
-  r.grid.columns = 49;
-  r.grid.rows = static_cast<int>(r.grid.centre.size()) / 49;
-  std::vector<std::string> names;
-  for (std::size_t k = 0; k < deltas.size(); ++k) {
-    names.push_back(fmt::format("/somewhere/camera/{:03d}_{:g}mm.png", k, deltas[k] * 1e3));
-    ImageMeasurements im;
-    for (const auto& c : r.grid.centre) {
-      SubsetMeasurement m;
-      const Point2 p{c.x * s * 1e-3, (140.0 - c.y * s) * 1e-3};  // m, box coordinates
-      const double w = deltas[k] > 0.0 ? settlement_w(p, deltas[k]) + offset_m : 0.0;
-      m.u = 0.0;
-      m.v = -w * 1e3 / s;
-      m.zncc = 1.0;
-      m.status = SubsetStatus::valid;
-      im.subset.push_back(m);
-    }
-    r.image.push_back(im);
-  }
-  r.reference_images = {0};
-  write_piv_h5(dir / "piv.h5", r, names, scale_transform(s, {0.0, 140.0 / s}), "mm", PivStrainSeries{});
-}
-
-TEST(DemPivComparison, ReadsPivH5InModelCoordinatesAboutTheTrapdoorCentre) {
-  const fs::path dir = fs::temp_directory_path() / "trapdem_cmp_read";
-  fs::remove_all(dir);
-  write_synthetic_piv(dir, {0.0, 0.005, 0.01}, 0.0);
-  ASSERT_EQ(piv_image_names(dir / "piv.h5").size(), 3u);
-  const auto f = read_piv_vertical_displacement(dir / "piv.h5", 1, 3, {0.1, 0.0});
-  ASSERT_EQ(f.position.size(), 49u * 34u);
-  EXPECT_NEAR(f.spacing, 0.004, 1e-12);
-  EXPECT_NEAR(f.position[0].x, 0.004 - 0.1, 1e-12);
-  EXPECT_NEAR(f.position[0].z, 0.136, 1e-12);
-  EXPECT_NEAR(f.w[0], settlement_w({0.004, 0.136}, 0.01), 1e-12);
-  // From image 2 to 3: the increment, at the positions in image 2.
-  const auto g = read_piv_vertical_displacement(dir / "piv.h5", 2, 3, {0.1, 0.0});
-  EXPECT_NEAR(g.w[0], settlement_w({0.004, 0.136}, 0.01) - settlement_w({0.004, 0.136}, 0.005), 1e-12);
-  EXPECT_THROW(read_piv_vertical_displacement(dir / "piv.h5", 1, 4), InputError);
-  EXPECT_THROW(piv_image_names(dir / "missing.h5"), InputError);
-  fs::remove_all(dir);
-}
-
-struct CompareCase {
-  fs::path run, piv;
-};
-
-CompareCase make_case(const std::string& name, double offset_m) {
-  const fs::path root = fs::temp_directory_path() / name;
-  fs::remove_all(root);
-  const std::vector<double> deltas{0.0, 0.005, 0.01};
-  test::make_synthetic_run(root / "run", deltas,
-                           [](Point2 p, double delta) { return Point2{0.0, settlement_w(p, delta)}; });
-  write_synthetic_piv(root / "piv", deltas, offset_m);
-  return {root / "run", root / "piv"};
-}
-
-TEST(DemPivComparison, SameFieldGivesZeroAndAnOffsetFieldItsKnownRmsThroughTheCommand) {
-  const CompareCase same = make_case("trapdem_cmp_same", 0.0);
-  CompareOptions o;
-  o.dem_dir = same.run.string();
-  o.piv_dir = same.piv.string();
-  o.at = "10mm";
-  const CompareResult c = compare_directories(o);
-  EXPECT_EQ(c.piv_image, 3u);
-  EXPECT_EQ(c.piv_reference_image, 1u);
-  EXPECT_NEAR(c.trapdoor_travel(), 0.01, 1e-9);
-  EXPECT_GT(c.error.compared, 2000u);
-  EXPECT_GT(c.error.coverage, 0.9);
-  EXPECT_LT(c.error.rms_normalised(), 1e-6);
-
-  const CompareCase off = make_case("trapdem_cmp_offset", 0.0002);  // PIV 0.2 mm higher everywhere
-  o.dem_dir = off.run.string();
-  o.piv_dir = off.piv.string();
-  o.out = (off.run / "compare.png").string();
-  const CompareResult d = compare_directories(o);
-  EXPECT_NEAR(d.error.rms_normalised(), 0.02, 1e-6);
-  EXPECT_NEAR(d.error.bias_normalised(), -0.02, 1e-6);
-  EXPECT_EQ(app::run_compare(o), 0);
-  EXPECT_TRUE(fs::exists(off.run / "compare.png"));
-
-  // --image picks another image: 5 mm of PIV against 10 mm of DEM is far off.
-  o.image = 2;
-  EXPECT_GT(compare_directories(o).error.rms_normalised(), 0.2);
-  o.image = 0;
-
-  // Clear errors: unknown displacement, missing PIV, no overlap.
-  o.at = "7mm";
-  EXPECT_THROW(compare_directories(o), InputError);
-  o.at = "10mm";
-  o.piv_trapdoor = "900mm,0mm";
-  EXPECT_THROW(compare_directories(o), InputError);
-  o.piv_trapdoor.clear();
-  o.piv_dir = (off.run / "nothing").string();
-  EXPECT_THROW(compare_directories(o), InputError);
-  fs::remove_all(same.run.parent_path());
-  fs::remove_all(off.run.parent_path());
 }
 
 }  // namespace

@@ -11,7 +11,7 @@
 #include <vector>
 
 #include "io/snapshot.hpp"
-#include "synthetic_points.hpp"
+#include "../analysis/synthetic_points.hpp"
 
 namespace trapdem::test {
 

@@ -1,5 +1,6 @@
 // `trapdem analyze` end to end on synthetic run folders: snapshots.h5 written with
-// append_snapshot, analysed through app::run_analyze, metrics.json read back.
+// append_snapshot, analysed and written through analyze_and_write (src/study/run_analysis.hpp, what
+// the command calls), metrics.json read back.
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -8,10 +9,9 @@
 #include <numbers>
 #include <sstream>
 
-#include "analysis/analysis_output.hpp"
-#include "core/json.hpp"
-#include "analyze_command.hpp"
 #include "core/errors.hpp"
+#include "core/json.hpp"
+#include "study/run_analysis.hpp"
 #include "synthetic_run.hpp"
 
 using namespace trapdem;
@@ -46,7 +46,7 @@ TEST(AnalyzePipeline, UniformVerticalStrainGivesThatStrainEverywhere) {
   o.incremental = true;
   o.no_figures = true;
   o.quiet = true;
-  ASSERT_EQ(app::run_analyze(o), 0);
+  analyze_and_write(o);
   const Json m = read_metrics(run.dir);
   EXPECT_NEAR(m["strain"]["gamma_max_median"].as_number(), eps, 1e-9);
   EXPECT_NEAR(m["strain"]["gamma_max_max"].as_number(), eps, 1e-9);
@@ -69,14 +69,14 @@ TEST(AnalyzePipeline, UniformVerticalStrainGivesThatStrainEverywhere) {
   // --view all takes the particles behind the front slab too.
   o.view = "all";
   o.incremental = false;
-  ASSERT_EQ(app::run_analyze(o), 0);
+  analyze_and_write(o);
   EXPECT_EQ(read_metrics(run.dir)["particles"]["viewed"].as_number(),
             static_cast<double>(run.front_count + run.back_count));
 }
 
 // Two planar bands leaning outward at 20 degrees from the trapdoor edges, 5 d wide (the block
 // between them moves down with the trapdoor): the metrics report the angle within 2 degrees and
-// the width within one diameter (the tolerances), through the whole command.
+// the width within one diameter (the tolerances), through the whole analysis of a run folder.
 TEST(AnalyzePipeline, TwoPlanarBandsGiveTheirAngleAndWidth) {
   const double d = 0.002, B = 0.05, xc = 0.1, angle = 20.0 * std::numbers::pi / 180.0;
   const double sigma = 5.0 * d / 2.3548200450309493;
@@ -92,7 +92,7 @@ TEST(AnalyzePipeline, TwoPlanarBandsGiveTheirAngleAndWidth) {
   o.reference = "0";
   o.no_figures = true;
   o.quiet = true;
-  ASSERT_EQ(app::run_analyze(o), 0);
+  analyze_and_write(o);
   const Json m = read_metrics(run.dir);
   for (const char* side : {"left", "right"}) {
     const Json& band = m["shear_bands"][side];
@@ -117,7 +117,7 @@ TEST(AnalyzePipeline, MissingDisplacementNamesTheAvailableOnes) {
   o.at = "80mm";
   o.quiet = true;
   try {
-    app::run_analyze(o);
+    analyze_and_write(o);
     FAIL() << "expected an InputError";
   } catch (const InputError& e) {
     EXPECT_NE(std::string(e.what()).find("--at 80 mm"), std::string::npos) << e.what();
@@ -125,8 +125,8 @@ TEST(AnalyzePipeline, MissingDisplacementNamesTheAvailableOnes) {
   }
   o.at = "1mm";
   o.view = "side";
-  EXPECT_THROW(app::run_analyze(o), InputError);
+  EXPECT_THROW(analyze_and_write(o), InputError);
   o.view = "front";
   o.grid = "-2mm";
-  EXPECT_THROW(app::run_analyze(o), InputError);
+  EXPECT_THROW(analyze_and_write(o), InputError);
 }
