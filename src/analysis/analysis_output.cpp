@@ -1,6 +1,8 @@
 #include "analysis/analysis_output.hpp"
 
 #include <cmath>
+#include <stdexcept>
+
 #include <fmt/format.h>
 
 #include "core/length_text.hpp"
@@ -12,6 +14,10 @@ namespace trapdem {
 namespace fs = std::filesystem;
 
 namespace {
+
+void create_parent(const fs::path& file) {
+  if (file.has_parent_path()) fs::create_directories(file.parent_path());
+}
 
 Json trace_json(const std::vector<BandTracePoint>& points) {
   Json z = Json::array(), x = Json::array(), peak = Json::array(), width = Json::array();
@@ -195,14 +201,16 @@ Json metrics_json(const AnalysisResult& r) {
   return j;
 }
 
-void write_metrics(const fs::path& dir, const AnalysisResult& result) {
-  fs::create_directories(dir);
-  write_text_atomically(dir / "metrics.json", metrics_json(result).dump());
+void write_metrics(const fs::path& path, const AnalysisResult& result) {
+  create_parent(path);
+  write_text_atomically(path, metrics_json(result).dump());
 }
 
-void write_fields(const fs::path& dir, const AnalysisResult& r) {
-  fs::create_directories(dir);
-  const fs::path h5 = dir / "fields.h5";
+void write_fields(const fs::path& h5, const fs::path& xmf, const AnalysisResult& r) {
+  if (h5.parent_path() != xmf.parent_path()) {
+    throw std::invalid_argument("write_fields: " + xmf.string() + " names " + h5.string() + " by its file name");
+  }
+  create_parent(h5);
   write_atomically(h5, [&](const fs::path& temporary) {
     Hdf5File file = Hdf5File::create_in_memory(h5);
     file.set_string_attribute("format", "trapdem-analysis-fields");
@@ -296,7 +304,7 @@ void write_fields(const fs::path& dir, const AnalysisResult& r) {
     }
     file.write_image(temporary);
   });
-  write_text_atomically(dir / "fields.xmf", fields_xdmf(r, "fields.h5"));
+  write_text_atomically(xmf, fields_xdmf(r, h5.filename().string()));
 }
 
 std::string fields_xdmf(const AnalysisResult& r, const std::string& h5) {

@@ -5,6 +5,7 @@
 #include <filesystem>
 #include <string_view>
 
+#include "experiment/analysis_folder.hpp"
 #include "experiment/experiment_config.hpp"
 
 namespace trapdem {
@@ -22,7 +23,8 @@ class RunFolder {
   std::filesystem::path snapshots_h5() const { return dir_ / "snapshots.h5"; }
   std::filesystem::path checkpoint_h5() const { return dir_ / "checkpoint.h5"; }
   std::filesystem::path analysis_dir() const { return dir_ / "analysis"; }        // `trapdem analyze`
-  std::filesystem::path metrics_json() const { return analysis_dir() / "metrics.json"; }
+  AnalysisFolder analysis() const { return AnalysisFolder(analysis_dir()); }     // the files in it
+  std::filesystem::path metrics_json() const { return analysis().metrics_json(); }
   std::filesystem::path camera_dir() const { return dir_ / "camera"; }            // `trapdem render`
 
   bool has_checkpoint() const { return std::filesystem::exists(checkpoint_h5()); }

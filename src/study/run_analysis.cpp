@@ -111,25 +111,25 @@ void write_ground_reaction_figure(const fs::path& csv, const fs::path& png, cons
 
 AnalysisResult analyze_and_write(const AnalyzeOptions& o, std::vector<fs::path>* written_files) {
   AnalysisResult r = analyze_directory(o);
-  const fs::path out = analysis_output_dir(o);
-  write_fields(out, r);
-  write_metrics(out, r);
-  std::vector<fs::path> written{out / "fields.h5", out / "fields.xmf", out / "metrics.json"};
+  const AnalysisFolder out(analysis_output_dir(o));
+  write_fields(out.fields_h5(), out.fields_xmf(), r);
+  write_metrics(out.metrics_json(), r);
+  std::vector<fs::path> written{out.fields_h5(), out.fields_xmf(), out.metrics_json()};
   if (!o.no_figures) {
-    plot::write_strain_map_png(out / "shear_strain.png", r, plot::StrainKind::total);
-    written.push_back(out / "shear_strain.png");
+    plot::write_strain_map_png(out.shear_strain_png(), r, plot::StrainKind::total);
+    written.push_back(out.shear_strain_png());
     if (r.has_incremental) {
-      plot::write_strain_map_png(out / "shear_strain_incremental.png", r, plot::StrainKind::incremental);
-      written.push_back(out / "shear_strain_incremental.png");
+      plot::write_strain_map_png(out.shear_strain_incremental_png(), r, plot::StrainKind::incremental);
+      written.push_back(out.shear_strain_incremental_png());
     }
-    plot::write_displacement_contours_png(out / "vertical_displacement.png", r);
-    written.push_back(out / "vertical_displacement.png");
-    plot::write_particles_png(out / "particles.png", r);
-    written.push_back(out / "particles.png");
+    plot::write_displacement_contours_png(out.vertical_displacement_png(), r);
+    written.push_back(out.vertical_displacement_png());
+    plot::write_particles_png(out.particles_png(), r);
+    written.push_back(out.particles_png());
     const fs::path csv = RunFolder(o.dir).trapdoor_csv();
     if (fs::exists(csv)) {
-      write_ground_reaction_figure(csv, out / "ground_reaction.png", r.geometry);
-      written.push_back(out / "ground_reaction.png");
+      write_ground_reaction_figure(csv, out.ground_reaction_png(), r.geometry);
+      written.push_back(out.ground_reaction_png());
     }
   }
   if (written_files) *written_files = written;

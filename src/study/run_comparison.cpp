@@ -146,7 +146,7 @@ void write_compare_figure(CompareResult c, const fs::path& out) {
 }
 
 fs::path default_compare_figure(const CompareOptions& o, const CompareResult& c) {
-  return RunFolder(o.dem_dir).analysis_dir() / fmt::format("compare_{:g}mm.png", std::round(c.at_displacement * 1e4) / 10.0);
+  return RunFolder(o.dem_dir).analysis().compare_png(c.at_displacement);
 }
 
 }  // namespace trapdem
