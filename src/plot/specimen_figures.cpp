@@ -195,6 +195,31 @@ MapLayout map_layout(const AnalysisResult& r, int width) {
   return {static_cast<int>(top + plot_h + bottom_margin + 10.0), Rect{0.0, top, width - right, plot_h + bottom_margin}};
 }
 
+// A map of the box coloured by vertical displacement (diverging, -travel to +travel): its canvas and
+// frame; `finish` adds the axes, the title and the colour bar and writes the PNG.
+struct DisplacementMap {
+  DisplacementMap(const AnalysisResult& r, int width)
+      : layout(map_layout(r, width)),
+        canvas(width, layout.height),
+        frame(map_frame(layout.area, r, left_margin, bottom_margin)),
+        travel(r.trapdoor_travel()) {}
+
+  void finish(const std::filesystem::path& path, const std::string& title, const std::string& subtitle) const {
+    cairo_t* cr = canvas.cr();
+    draw_specimen_axes(cr, frame, 16.0);
+    draw_title(cr, frame.pixels().x, 18.0, title, subtitle, 20.0);
+    draw_colour_bar(cr, {frame.pixels().right() + 30.0, frame.pixels().y, 24.0, frame.pixels().h}, map, -travel,
+                    travel, ColourBarStyle{.label = "vertical displacement w (mm)", .tick_scale = mm});
+    canvas.write_png(path);
+  }
+
+  MapLayout layout;
+  Canvas canvas;
+  PlotFrame frame;
+  double travel;  // m
+  ColourMap map{ColourMapKind::diverging};
+};
+
 }  // namespace
 
 void write_strain_map_png(const std::filesystem::path& path, const AnalysisResult& r, StrainKind kind, double vmax,
@@ -220,12 +245,11 @@ void write_strain_map_png(const std::filesystem::path& path, const AnalysisResul
 }
 
 void write_displacement_contours_png(const std::filesystem::path& path, const AnalysisResult& r, int width) {
-  const MapLayout layout = map_layout(r, width);
-  Canvas canvas(width, layout.height);
-  cairo_t* cr = canvas.cr();
-  const PlotFrame f = map_frame(layout.area, r, left_margin, bottom_margin);
-  const double travel = r.trapdoor_travel();
-  const ColourMap map(ColourMapKind::diverging);
+  DisplacementMap figure(r, width);
+  cairo_t* cr = figure.canvas.cr();
+  const PlotFrame& f = figure.frame;
+  const double travel = figure.travel;
+  const ColourMap& map = figure.map;
   const GridField& w = r.vertical_displacement;
   cairo_save(cr);
   f.clip(cr);
@@ -260,23 +284,15 @@ void write_displacement_contours_png(const std::filesystem::path& path, const An
   }
   const double step_mm = levels.size() > 1 ? (levels[1] - levels[0]) * mm : 1.0;
   draw_contours(cr, f, settlement, levels, [&](double v) { return format_tick(v * mm, step_mm); }, ContourStyle{});
-  draw_specimen_axes(cr, f, 16.0);
-  draw_title(cr, f.pixels().x, 18.0, fmt::format("{}: settlement contours (mm)", r.geometry.name),
-             fmt::format("{}; colour: vertical displacement w on the reference positions\ngrid {}; {}",
-                         displacement_text(r), format_mm(r.settings.grid_spacing), view_text(r)),
-             20.0);
-  draw_colour_bar(cr, {f.pixels().right() + 30.0, f.pixels().y, 24.0, f.pixels().h}, map, -travel, travel,
-                  ColourBarStyle{.label = "vertical displacement w (mm)", .tick_scale = mm});
-  canvas.write_png(path);
+  figure.finish(path, fmt::format("{}: settlement contours (mm)", r.geometry.name),
+                fmt::format("{}; colour: vertical displacement w on the reference positions\ngrid {}; {}",
+                            displacement_text(r), format_mm(r.settings.grid_spacing), view_text(r)));
 }
 
 void write_particles_png(const std::filesystem::path& path, const AnalysisResult& r, int width) {
-  const MapLayout layout = map_layout(r, width);
-  Canvas canvas(width, layout.height);
-  cairo_t* cr = canvas.cr();
-  const PlotFrame f = map_frame(layout.area, r, left_margin, bottom_margin);
-  const double travel = r.trapdoor_travel();
-  const ColourMap map(ColourMapKind::diverging);
+  DisplacementMap figure(r, width);
+  cairo_t* cr = figure.canvas.cr();
+  const PlotFrame& f = figure.frame;
   cairo_save(cr);
   f.clip(cr);
   const double scale = f.scale_x();
@@ -284,7 +300,7 @@ void write_particles_png(const std::filesystem::path& path, const AnalysisResult
     const Point2 p = r.points.position[k] + r.points.displacement[k];
     cairo_new_sub_path(cr);
     cairo_arc(cr, f.px(p.x * mm), f.py(p.z * mm), r.radius[k] * mm * scale, 0.0, 2.0 * M_PI);
-    set_colour(cr, map.of(r.points.displacement[k].z, -travel, travel));
+    set_colour(cr, figure.map.of(r.points.displacement[k].z, -figure.travel, figure.travel));
     cairo_fill_preserve(cr);
     cairo_set_source_rgba(cr, 0.2, 0.2, 0.2, 0.7);
     cairo_set_line_width(cr, 0.8);
@@ -292,12 +308,8 @@ void write_particles_png(const std::filesystem::path& path, const AnalysisResult
   }
   draw_base_and_trapdoor(cr, f, r);
   cairo_restore(cr);
-  draw_specimen_axes(cr, f, 16.0);
-  draw_title(cr, f.pixels().x, 18.0, fmt::format("{}: particles coloured by vertical displacement", r.geometry.name),
-             fmt::format("{}\ncurrent positions, radius to scale; {}", displacement_text(r), view_text(r)), 20.0);
-  draw_colour_bar(cr, {f.pixels().right() + 30.0, f.pixels().y, 24.0, f.pixels().h}, map, -travel, travel,
-                  ColourBarStyle{.label = "vertical displacement w (mm)", .tick_scale = mm});
-  canvas.write_png(path);
+  figure.finish(path, fmt::format("{}: particles coloured by vertical displacement", r.geometry.name),
+                fmt::format("{}\ncurrent positions, radius to scale; {}", displacement_text(r), view_text(r)));
 }
 
 void write_strain_panel_png(const std::filesystem::path& path, const std::vector<const AnalysisResult*>& results,

@@ -5,6 +5,7 @@
 #include <string>
 #include <vector>
 
+#include "study/run_comparison.hpp"
 #include "synthetic_piv.hpp"
 #include "synthetic_run.hpp"
 
@@ -15,6 +16,15 @@ inline double settlement_w(Point2 p, double delta) { return -delta * (0.8 - 2.0 
 
 struct CompareCase {
   std::filesystem::path run, piv;
+
+  // The options comparing the two at the last displacement (10 mm).
+  CompareOptions options() const {
+    CompareOptions o;
+    o.dem_dir = run.string();
+    o.piv_dir = piv.string();
+    o.at = "10mm";
+    return o;
+  }
 };
 
 // Under the temporary folder `name`: run/ and piv/ at trapdoor displacements 0, 5 and 10 mm, the

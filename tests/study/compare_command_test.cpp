@@ -17,10 +17,7 @@ namespace fs = std::filesystem;
 
 TEST(CompareCommand, ReportsTheErrorAndWritesTheFigure) {
   const test::CompareCase c = test::make_compare_case("trapdem_compare_command", 0.0002);
-  CompareOptions o;
-  o.dem_dir = c.run.string();
-  o.piv_dir = c.piv.string();
-  o.at = "10mm";
+  CompareOptions o = c.options();
   testing::internal::CaptureStdout();
   EXPECT_EQ(app::run_compare(o), 0);
   const std::string text = testing::internal::GetCapturedStdout();

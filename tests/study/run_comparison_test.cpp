@@ -7,8 +7,8 @@
 #include <filesystem>
 
 #include "core/errors.hpp"
-#include "study/run_comparison.hpp"
 #include "compare_case.hpp"
+#include "study/run_comparison.hpp"
 
 namespace trapdem {
 namespace {
@@ -17,10 +17,7 @@ namespace fs = std::filesystem;
 
 TEST(RunComparison, SameFieldGivesZeroAndAnOffsetFieldItsKnownRms) {
   const test::CompareCase same = test::make_compare_case("trapdem_cmp_same", 0.0);
-  CompareOptions o;
-  o.dem_dir = same.run.string();
-  o.piv_dir = same.piv.string();
-  o.at = "10mm";
+  CompareOptions o = same.options();
   const CompareResult c = compare_directories(o);
   EXPECT_EQ(c.piv_image, 3u);
   EXPECT_EQ(c.piv_reference_image, 1u);
@@ -30,8 +27,7 @@ TEST(RunComparison, SameFieldGivesZeroAndAnOffsetFieldItsKnownRms) {
   EXPECT_LT(c.error.rms_normalised(), 1e-6);
 
   const test::CompareCase off = test::make_compare_case("trapdem_cmp_offset", 0.0002);  // PIV 0.2 mm higher everywhere
-  o.dem_dir = off.run.string();
-  o.piv_dir = off.piv.string();
+  o = off.options();
   const CompareResult d = compare_directories(o);
   EXPECT_NEAR(d.error.rms_normalised(), 0.02, 1e-6);
   EXPECT_NEAR(d.error.bias_normalised(), -0.02, 1e-6);
