@@ -233,8 +233,12 @@ fs::path write_study_report(const fs::path& dir, const StudyReportInput& in) {
     j.set("spread", spreads);
     Json runs = Json::array();
     for (const StudyRunResult& r : c.runs) {
-      Json run = to_json(r.summary);
-      run.set("run_dir", r.run_dir.string());
+      // Each run's measured values (its cost and folder are in metrics.csv and on the page: the
+      // numbers here stay the same for the same runs wherever and however fast they ran).
+      const Json all = to_json(r.summary);  // named: a temporary's members() would dangle in the loop
+      Json run = Json::object();
+      for (const auto& [key, value] : all.members())
+        if (key != "cost") run.set(key, value);
       run.set("analysed", r.analysed);
       runs.push_back(run);
     }

@@ -62,41 +62,28 @@ const int kSeeds[] = {7, 8};  // tiny's pluviation.seed is 7: 7 and 7 + 1
 
 Json read_json(const fs::path& file) { return Json::parse(read_text_file(file), file.string()); }
 
-class ReplicateStudy : public ::testing::Test {
- protected:
-  static void SetUpTestSuite() {
-    dir_ = new fs::path(fs::temp_directory_path() / ("trapdem-replicate-study-" + std::to_string(::getpid())));
-    fs::remove_all(*dir_);
-    fs::create_directories(*dir_);
-    std::ofstream(*dir_ / "study.toml") << kStudy;
-    ASSERT_EQ(app::run_study(options()), 0);
-  }
-  static void TearDownTestSuite() {
-    fs::remove_all(*dir_);
-    delete dir_;
-  }
-  static app::StudyOptions options() {
-    app::StudyOptions o;
-    o.file = (*dir_ / "study.toml").string();
-    o.out = out().string();
-    o.threads = 1;
-    o.quiet = true;
-    return o;
-  }
-  static fs::path out() { return *dir_ / "out"; }
-  static fs::path run_dir(int c, int s) { return out() / "cases" / kCases[c] / fmt::format("seed-{}", kSeeds[s]); }
-  static Json summary() { return read_json(out() / "report" / "summary.json"); }
-  static fs::path* dir_;
-};
-fs::path* ReplicateStudy::dir_ = nullptr;
+// The study's folder (one study for all the checks: it is a minute of running).
+const fs::path& study_dir() {
+  static const fs::path dir = fs::temp_directory_path() / ("trapdem-replicate-study-" + std::to_string(::getpid()));
+  return dir;
+}
+app::StudyOptions options() {
+  app::StudyOptions o;
+  o.file = (study_dir() / "study.toml").string();
+  o.out = (study_dir() / "out").string();
+  o.threads = 1;
+  o.quiet = true;
+  return o;
+}
+fs::path out() { return study_dir() / "out"; }
+fs::path run_dir(int c, int s) { return out() / "cases" / kCases[c] / fmt::format("seed-{}", kSeeds[s]); }
+Json summary() { return read_json(out() / "report" / "summary.json"); }
 
 // Sample mean and standard deviation of two values, by hand.
 double mean2(double a, double b) { return 0.5 * (a + b); }
 double sd2(double a, double b) { return std::fabs(a - b) / std::sqrt(2.0); }
 
-}  // namespace
-
-TEST_F(ReplicateStudy, EachReplicateRunsInItsFolderWithItsSeedInResolvedToml) {
+void EachReplicateRunsInItsFolderWithItsSeedInResolvedToml() {
   for (int c = 0; c < 2; ++c)
     for (int s = 0; s < 2; ++s) {
       const fs::path dir = run_dir(c, s);
@@ -112,7 +99,7 @@ TEST_F(ReplicateStudy, EachReplicateRunsInItsFolderWithItsSeedInResolvedToml) {
   EXPECT_NE(read_text_file(run_dir(0, 0) / "trapdoor.csv"), read_text_file(run_dir(0, 1) / "trapdoor.csv"));
 }
 
-TEST_F(ReplicateStudy, MeansAndSpreadsEqualAHandComputationFromTheReplicatesAnalyses) {
+void MeansAndSpreadsEqualAHandComputationFromTheReplicatesAnalyses() {
   const Json s = summary();
   ASSERT_EQ(s["cases"].size(), 2u);
   const std::string case_csv = read_text_file(out() / "report" / "case_summary.csv");
@@ -157,7 +144,7 @@ TEST_F(ReplicateStudy, MeansAndSpreadsEqualAHandComputationFromTheReplicatesAnal
   EXPECT_EQ(std::count(csv.begin(), csv.end(), '\n'), 5);  // the header and four runs
 }
 
-TEST_F(ReplicateStudy, FindingsClaimADifferenceOnlyBeyondTheSpread) {
+void FindingsClaimADifferenceOnlyBeyondTheSpread() {
   const Json s = summary();
   const Json& smooth = s["cases"][0]["spread"]["min_load_ratio"];
   const Json& rough = s["cases"][1]["spread"]["min_load_ratio"];
@@ -182,7 +169,7 @@ TEST_F(ReplicateStudy, FindingsClaimADifferenceOnlyBeyondTheSpread) {
   EXPECT_TRUE(rule);
 }
 
-TEST_F(ReplicateStudy, TheElementTestsAnglesAreInTheMetrics) {
+void TheElementTestsAnglesAreInTheMetrics() {
   const Json s = summary();
   const std::string csv = read_text_file(out() / "report" / "metrics.csv");
   EXPECT_NE(csv.substr(0, csv.find('\n')).find(",phi_peak_deg,phi_cs_deg,"), std::string::npos);
@@ -209,7 +196,7 @@ TEST_F(ReplicateStudy, TheElementTestsAnglesAreInTheMetrics) {
   EXPECT_TRUE(fs::exists(out() / "report" / "ground_reaction_rough.png"));
 }
 
-TEST_F(ReplicateStudy, ASecondCallSkipsEveryFinishedReplicateAndElementTest) {
+void ASecondCallSkipsEveryFinishedReplicateAndElementTest() {
   const std::string before = read_text_file(out() / "report" / "case_summary.csv");
   const auto element_time = fs::last_write_time(out() / "cases" / "smooth" / "element" / "element.json");
   ASSERT_EQ(app::run_study(options()), 0);
@@ -223,4 +210,36 @@ TEST_F(ReplicateStudy, ASecondCallSkipsEveryFinishedReplicateAndElementTest) {
   }
   EXPECT_EQ(fs::last_write_time(out() / "cases" / "smooth" / "element" / "element.json"), element_time);
   EXPECT_EQ(read_text_file(out() / "report" / "case_summary.csv"), before);
+}
+
+}  // namespace
+
+// One study, run once (each check below would otherwise run it again: gtest_discover_tests runs
+// every test in a process of its own), then checked, then called a second time.
+TEST(ReplicateStudy, TwoCasesTwoSeedsAndTheElementTest) {
+  fs::remove_all(study_dir());
+  fs::create_directories(study_dir());
+  std::ofstream(study_dir() / "study.toml") << kStudy;
+  ASSERT_EQ(app::run_study(options()), 0);
+  {
+    SCOPED_TRACE("EachReplicateRunsInItsFolderWithItsSeedInResolvedToml");
+    EachReplicateRunsInItsFolderWithItsSeedInResolvedToml();
+  }
+  {
+    SCOPED_TRACE("MeansAndSpreadsEqualAHandComputationFromTheReplicatesAnalyses");
+    MeansAndSpreadsEqualAHandComputationFromTheReplicatesAnalyses();
+  }
+  {
+    SCOPED_TRACE("FindingsClaimADifferenceOnlyBeyondTheSpread");
+    FindingsClaimADifferenceOnlyBeyondTheSpread();
+  }
+  {
+    SCOPED_TRACE("TheElementTestsAnglesAreInTheMetrics");
+    TheElementTestsAnglesAreInTheMetrics();
+  }
+  {
+    SCOPED_TRACE("ASecondCallSkipsEveryFinishedReplicateAndElementTest");
+    ASecondCallSkipsEveryFinishedReplicateAndElementTest();
+  }
+  fs::remove_all(study_dir());
 }
