@@ -24,7 +24,7 @@ int run_study(const StudyOptions& o) {
   } else if (!run_study_in_folder(study, scale, out, StudyRunSettings{preset_directory(), o.threads, o.quiet})) {
     return 130;
   }
-  const fs::path page = write_study_outputs(study, scale, out, o.quiet);
+  const fs::path page = write_study_outputs(study, scale, out, o.quiet, preset_directory());
   log_study_line(out, fmt::format("report: {}", page.string()), o.quiet);
   if (!o.quiet) {
     const Json summary = Json::parse(read_text_file(page.parent_path() / "summary.json"));

@@ -33,6 +33,12 @@ void read_mechanism_metrics(const Json& m, CaseSummary& s) {
   s.band_angle_left_deg = json_number_or_nan(left, "angle_deg");
   s.band_angle_right_deg = json_number_or_nan(right, "angle_deg");
   s.band_angle_deg = mean_of_found(s.band_angle_left_deg, s.band_angle_right_deg);
+  s.band_angle_left_error_deg = json_number_or_nan(left, "angle_error_deg");
+  s.band_angle_right_error_deg = json_number_or_nan(right, "angle_error_deg");
+  if (std::isfinite(s.band_angle_left_deg) && std::isfinite(s.band_angle_right_deg))
+    s.band_angle_error_deg = 0.5 * std::hypot(s.band_angle_left_error_deg, s.band_angle_right_error_deg);
+  else
+    s.band_angle_error_deg = std::isfinite(s.band_angle_left_deg) ? s.band_angle_left_error_deg : s.band_angle_right_error_deg;
   s.band_height = mean_of_found(json_number_or_nan(left, "height_reached_m"), json_number_or_nan(right, "height_reached_m"));
   s.band_width_d = mean_of_found(json_number_or_nan(left, "width_diameters"), json_number_or_nan(right, "width_diameters"));
 
@@ -42,6 +48,39 @@ void read_mechanism_metrics(const Json& m, CaseSummary& s) {
   s.shape_ratio = json_number_or_nan(zone, "shape_ratio");
   const Json& shape = json_member_or_null(zone, "shape");
   s.shape = shape.type() == Json::Type::string ? shape.as_string() : "";
+
+  s.warnings.clear();
+  const Json& warnings = json_member_or_null(m, "warnings");
+  for (std::size_t k = 0; warnings.type() == Json::Type::array && k < warnings.size(); ++k)
+    s.warnings.push_back(warnings[k].as_string());
+}
+
+const std::vector<SummaryMetric>& summary_metrics() {
+  static const std::vector<SummaryMetric> metrics = {
+      {"trapdoor_width_m", &CaseSummary::trapdoor_width},
+      {"travel_m", &CaseSummary::travel},
+      {"mean_diameter_m", &CaseSummary::mean_diameter},
+      {"band_angle_deg", &CaseSummary::band_angle_deg},
+      {"band_angle_error_deg", &CaseSummary::band_angle_error_deg},
+      {"band_angle_left_deg", &CaseSummary::band_angle_left_deg},
+      {"band_angle_left_error_deg", &CaseSummary::band_angle_left_error_deg},
+      {"band_angle_right_deg", &CaseSummary::band_angle_right_deg},
+      {"band_angle_right_error_deg", &CaseSummary::band_angle_right_error_deg},
+      {"band_height_m", &CaseSummary::band_height},
+      {"band_width_diameters", &CaseSummary::band_width_d},
+      {"zone_surface_m", &CaseSummary::zone_surface},
+      {"zone_mid_height_m", &CaseSummary::zone_mid_height},
+      {"shape_ratio", &CaseSummary::shape_ratio},
+      {"min_load_ratio", &CaseSummary::min_load_ratio},
+      {"min_load_at_over_B", &CaseSummary::min_load_at_over_b},
+      {"final_load_ratio", &CaseSummary::final_load_ratio},
+      {"dem_surface_diameter_prototype_m", &CaseSummary::dem_surface_diameter},
+      {"supposition_surface_diameter_prototype_m", &CaseSummary::supposition_surface_diameter},
+      {"angle_of_draw_from_surface_deg", &CaseSummary::angle_from_surface_deg},
+      {"phi_peak_deg", &CaseSummary::phi_peak_deg},
+      {"phi_cs_deg", &CaseSummary::phi_cs_deg},
+  };
+  return metrics;
 }
 
 void read_ground_reaction(const std::vector<GroundReactionRow>& rows, double trapdoor_width, CaseSummary& s) {
@@ -83,26 +122,14 @@ Json to_json(const CaseSummary& s) {
   Json j = Json::object();
   j.set("name", s.name);
   j.set("label", s.label);
-  j.set("trapdoor_width_m", number(s.trapdoor_width));
-  j.set("travel_m", number(s.travel));
-  j.set("mean_diameter_m", number(s.mean_diameter));
-  j.set("band_angle_deg", number(s.band_angle_deg));
-  j.set("band_angle_left_deg", number(s.band_angle_left_deg));
-  j.set("band_angle_right_deg", number(s.band_angle_right_deg));
-  j.set("band_height_m", number(s.band_height));
-  j.set("band_width_diameters", number(s.band_width_d));
-  j.set("zone_surface_m", number(s.zone_surface));
-  j.set("zone_mid_height_m", number(s.zone_mid_height));
-  j.set("shape_ratio", number(s.shape_ratio));
+  if (s.replicate) j.set("seed", static_cast<double>(s.seed));
+  for (const SummaryMetric& m : summary_metrics()) j.set(m.key, number(s.*m.field));
   j.set("shape", s.shape);
-  j.set("min_load_ratio", number(s.min_load_ratio));
-  j.set("min_load_at_over_B", number(s.min_load_at_over_b));
-  j.set("final_load_ratio", number(s.final_load_ratio));
-  j.set("dem_surface_diameter_prototype_m", number(s.dem_surface_diameter));
-  j.set("supposition_surface_diameter_prototype_m", number(s.supposition_surface_diameter));
-  j.set("angle_of_draw_from_surface_deg", number(s.angle_from_surface_deg));
   j.set("dem_size_class", s.dem_size_class);
   j.set("supposition_size_class", s.supposition_size_class);
+  Json warnings = Json::array();
+  for (const std::string& w : s.warnings) warnings.push_back(w);
+  j.set("warnings", warnings);
   Json cost = Json::object();
   cost.set("wall_seconds", number(s.cost.wall_seconds));
   cost.set("particle_steps", number(s.cost.particle_steps));

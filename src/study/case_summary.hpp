@@ -2,6 +2,7 @@
 // One case of a study in numbers: the mechanism metrics of its analysis (analysis/metrics.json), its
 // ground reaction curve (trapdoor.csv), its cost (run.json) and the sinkhole estimates. The report's
 // table, findings and summary.json are made from these, so what they say is what the runs measured.
+#include <cstdint>
 #include <filesystem>
 #include <limits>
 #include <string>
@@ -25,11 +26,16 @@ struct CaseCost {
 
 struct CaseSummary {
   std::string name, label;
+  bool replicate = false;              // one of several packing seeds of the case (study/replicates.hpp)
+  std::uint64_t seed = 0;              // its pluviation.seed (a replicate's; 0 otherwise)
   double trapdoor_width = kMissing;    // m, B
   double travel = kMissing;            // m, trapdoor travel analysed (the final snapshot)
   double mean_diameter = kMissing;     // m, d of the viewed particles
   // Shear bands: mean of the left and right band (the one found if only one), and each side.
   double band_angle_deg = kMissing, band_angle_left_deg = kMissing, band_angle_right_deg = kMissing;
+  // Their uncertainty: the standard error of the fitted slope (metrics.json angle_error_deg); of the
+  // mean of both sides, (e_l^2 + e_r^2)^(1/2) / 2 (independent fits).
+  double band_angle_error_deg = kMissing, band_angle_left_error_deg = kMissing, band_angle_right_error_deg = kMissing;
   double band_height = kMissing;       // m above the trapdoor, height the bands reach
   double band_width_d = kMissing;      // band width in mean diameters
   // Zone of influence (surface settlement above a fraction of the travel).
@@ -48,7 +54,19 @@ struct CaseSummary {
   double supposition_surface_diameter = kMissing;// m, with the report's angle of draw
   double angle_from_surface_deg = kMissing;      // the angle of draw the DEM surface zone implies
   std::string dem_size_class, supposition_size_class;
+  // The analysis' warnings (metrics.json `warnings`, e.g. a zone of influence reaching a side wall).
+  std::vector<std::string> warnings;
+  // The case's element test (report.element_test), per case, not per replicate: degrees.
+  double phi_peak_deg = kMissing, phi_cs_deg = kMissing;
 };
+
+// The numeric fields of a summary under their JSON/CSV names, in the order the report's files list
+// them: summary.json, metrics.csv and the per-case spreads all follow this one list.
+struct SummaryMetric {
+  const char* key;
+  double CaseSummary::*field;
+};
+const std::vector<SummaryMetric>& summary_metrics();
 
 // Fills the mechanism fields from a metrics.json document (NaN where a value is missing or null).
 void read_mechanism_metrics(const Json& metrics, CaseSummary& summary);

@@ -79,6 +79,7 @@ StudyDefinition load_study(const fs::path& file) {
   study.source = file;
   study.name = document.get_string("name", file.stem().string());
   study.description = document.get_string("description", "");
+  study.replicates = read_replicate_request(document, "");
 
   if (!document.is_table("scales")) throw document.error("scales", "a table of scales, e.g. [scales.demo] preset = \"demo\"");
   for (const std::string& name : document.keys("scales")) {
@@ -88,6 +89,7 @@ StudyDefinition load_study(const fs::path& file) {
     scale.name = name;
     scale.description = document.get_string(table + ".description", "");
     scale.base = read_recipe(document, table, folder);
+    scale.replicates = read_replicate_request(document, table);
     if (scale.base.preset.empty() && scale.base.config.empty())
       throw document.error(table, "a preset or a config: the base every case starts from at this scale");
     study.scales.push_back(std::move(scale));
@@ -105,6 +107,7 @@ StudyDefinition load_study(const fs::path& file) {
     c.name = name;
     c.label = document.get_string(table + ".label", name);
     c.own = read_recipe(document, table, folder);
+    c.replicates = read_replicate_request(document, table);
     study.cases.push_back(std::move(c));
   }
   if (study.cases.empty()) throw document.error("cases", "at least one case");
@@ -113,8 +116,24 @@ StudyDefinition load_study(const fs::path& file) {
   study.report.angle_of_draw_deg = document.get_double("report.angle_of_draw", 30.0, "degrees from the vertical",
                                                        {0.0, 90.0, true, false});
   study.report.max_strain = document.get_double("report.max_strain", 0.0, "-", Range::non_negative());
+  study.report.element_test = document.get_bool("report.element_test", false);
+  if (document.has("report.element")) {
+    if (!document.is_table("report.element"))
+      throw document.error("report.element", "a table of element-test keys, e.g. particles = 300 (docs/element.md)");
+    // Checked when each case's element setup is read, before the first run (study_runner).
+    for (const auto& [key, value] : flatten_values(document, "report.element"))
+      study.report.element_overrides.push_back("element." + key + "=" + value);
+    if (!study.report.element_test)
+      throw document.error("report.element", "report.element_test = true (the table sets an element test that "
+                                             "would not run)");
+  }
   document.report_unused();
   return study;
+}
+
+const ReplicateRequest& case_replicates(const StudyDefinition& study, const StudyCase& study_case,
+                                        const StudyScale& scale) {
+  return applicable_request(study_case.replicates, scale.replicates, study.replicates);
 }
 
 ConfigRecipe case_recipe(const StudyCase& study_case, const StudyScale& scale) {

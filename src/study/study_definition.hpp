@@ -20,6 +20,8 @@
 #include <utility>
 #include <vector>
 
+#include "study/replicates.hpp"
+
 namespace trapdem {
 
 class Config;
@@ -35,18 +37,24 @@ struct StudyScale {
   std::string name;
   std::string description;
   ConfigRecipe base;
+  ReplicateRequest replicates;         // `replicates`/`seeds` in the scale's table (study/replicates.hpp)
 };
 
 struct StudyCase {
   std::string name;                    // the folder name: letters, digits, '-', '_', '.'
   std::string label;                   // for tables and figures (default: the name)
   ConfigRecipe own;                    // preset/config replace the scale's base if given
+  ReplicateRequest replicates;         // `replicates`/`seeds` in the case's table
 };
 
 struct StudyReportSettings {
   double contours_at = 0.01;           // m of trapdoor travel for the vertical displacement contours
   double angle_of_draw_deg = 30.0;     // the supposition's angle beside each case's DEM estimate
   double max_strain = 0.0;             // top of the shared gamma_max scale; 0: automatic
+  // The virtual element test of each case's particles and contact law (`trapdem element`, issue 17),
+  // once per case: phi'_peak and phi'_cs beside the mechanism metrics.
+  bool element_test = false;
+  std::vector<std::string> element_overrides;  // [report.element] as "element.KEY=value" overrides
 };
 
 struct StudyDefinition {
@@ -56,6 +64,7 @@ struct StudyDefinition {
   std::vector<StudyScale> scales;      // in the order the file writes them
   std::vector<StudyCase> cases;        // in the order the file writes them
   StudyReportSettings report;
+  ReplicateRequest replicates;         // `replicates`/`seeds` at the file's top level
   std::filesystem::path source;        // the study file ("" if built in code)
 
   // Throws InputError naming the study file and listing the scales if `name` is not one of them.
@@ -69,6 +78,10 @@ StudyDefinition load_study(const std::filesystem::path& file);
 // The recipe a case runs with at a scale: the case's base if it has one, else the scale's; the scale's
 // overrides, then the case's, then name = the case name.
 ConfigRecipe case_recipe(const StudyCase& study_case, const StudyScale& scale);
+
+// The replicate request that applies to a case at a scale (case, else scale, else study).
+const ReplicateRequest& case_replicates(const StudyDefinition& study, const StudyCase& study_case,
+                                        const StudyScale& scale);
 
 // A folder-safe case name ("rolling_friction-0.2"): letters, digits, '-', '_', '.'; not empty, not "."/"..".
 bool is_valid_case_name(const std::string& name);

@@ -39,7 +39,10 @@ std::string contour_file(const StudyCaseResult& c) { return "contours_" + c.summ
 void write_ground_reaction_chart(const fs::path& png, const StudyReportInput& in) {
   plot::LineChart chart;
   chart.title = "Ground reaction curves";
-  chart.subtitle = "trapdoor stress over its value before lowering";
+  bool replicated = false;
+  for (const StudyCaseResult& c : in.cases) replicated = replicated || c.ensemble.replicates.size() > 1;
+  chart.subtitle = replicated ? "trapdoor stress over its value before lowering; a case of several seeds: their mean"
+                              : "trapdoor stress over its value before lowering";
   chart.x_label = "trapdoor displacement / trapdoor width  δ/B (-)";
   chart.y_label = "trapdoor stress / stress before lowering (-)";
   chart.reference_y = {1.0};
@@ -55,30 +58,58 @@ void write_ground_reaction_chart(const fs::path& png, const StudyReportInput& in
   plot::write_line_chart_png(png, chart);
 }
 
-std::string metrics_csv(const StudyReportInput& in) {
-  std::string out =
-      "case,label,trapdoor_width_m,travel_m,band_angle_deg,band_angle_left_deg,band_angle_right_deg,band_height_m,"
-      "band_width_diameters,zone_surface_m,zone_mid_height_m,shape_ratio,min_load_ratio,min_load_at_over_B,"
-      "final_load_ratio,dem_surface_diameter_prototype_m,supposition_surface_diameter_prototype_m,wall_seconds,"
-      "particle_steps_per_second,particles\n";
-  for (const StudyCaseResult& c : in.cases) {
-    const CaseSummary& s = c.summary;
-    const double row[] = {s.trapdoor_width, s.travel, s.band_angle_deg, s.band_angle_left_deg, s.band_angle_right_deg,
-                          s.band_height, s.band_width_d, s.zone_surface, s.zone_mid_height, s.shape_ratio,
-                          s.min_load_ratio, s.min_load_at_over_b, s.final_load_ratio, s.dem_surface_diameter,
-                          s.supposition_surface_diameter, s.cost.wall_seconds, s.cost.particle_steps_per_second,
-                          s.cost.particles};
-    // Appended piece by piece: `out += a + "," + b` trips GCC 12's false -Wrestrict (GCC bug 105651).
-    out += s.name;
-    out += ',';
-    out += s.label;
-    for (double x : row) {
-      out += ',';
-      out += csv_number(x);
-    }
-    out += "\n";
+std::string replicate_chart_file(const StudyCaseResult& c) { return "ground_reaction_" + c.summary.name + ".png"; }
+
+// A case's replicates' ground reaction curves (thin) with their mean (thick).
+void write_replicate_chart(const fs::path& png, const StudyCaseResult& c) {
+  plot::LineChart chart;
+  chart.title = fmt::format("{}: ground reaction curves of {} packing seeds", c.summary.label,
+                            c.ensemble.replicates.size());
+  chart.subtitle = "each seed (thin) and their mean (thick, black)";
+  chart.x_label = "trapdoor displacement / trapdoor width  δ/B (-)";
+  chart.y_label = "trapdoor stress / stress before lowering (-)";
+  chart.reference_y = {1.0};
+  for (std::size_t k = 0; k < c.ensemble.replicates.size(); ++k) {
+    const CaseSummary& r = c.ensemble.replicates[k];
+    plot::LineSeries series;
+    series.name = fmt::format("seed {}", r.seed);
+    series.colour = plot::series_colour(k);
+    series.width = 1.2;
+    series.x = r.grc_x_over_b;
+    series.y = r.grc_trapdoor_ratio;
+    chart.series.push_back(std::move(series));
   }
-  return out;
+  plot::LineSeries mean;
+  mean.name = "mean";
+  mean.colour = {0.0, 0.0, 0.0};
+  mean.width = 3.5;
+  mean.x = c.summary.grc_x_over_b;
+  mean.y = c.summary.grc_trapdoor_ratio;
+  chart.series.push_back(std::move(mean));
+  plot::write_line_chart_png(png, chart);
+}
+
+// A metric over a case's replicates for the page: "—" (none), the value (one), or the mean ± the
+// sample standard deviation with the range below (several); "(n = k)" where fewer replicates than
+// the case's measured it.
+std::string spread_cell(const Spread& s, std::size_t runs, const char* format) {
+  if (s.n == 0) return "—";
+  const std::string missing = s.n < runs ? fmt::format(" (n = {})", s.n) : "";
+  auto f = [&](double x) { return fmt::format(fmt::runtime(format), x); };
+  if (!s.has_sd()) return f(s.mean) + missing;
+  return fmt::format("{} ± {}<br><small>{}..{}{}</small>", f(s.mean), f(s.sd), f(s.min), f(s.max), missing);
+}
+
+// A band angle with its uncertainty: one run, ± the fit's standard error; several, ± the seeds'
+// standard deviation (the range and the mean fit error below).
+std::string angle_cell(const CaseEnsemble& e, double CaseSummary::*angle, double CaseSummary::*error) {
+  const Spread a = e.spread(angle), err = e.spread(error);
+  if (a.n == 0) return "—";
+  const std::string missing = a.n < e.replicates.size() ? fmt::format(" (n = {})", a.n) : "";
+  if (!a.has_sd())
+    return err.n > 0 ? fmt::format("{:.1f} ± {:.1f}{}", a.mean, err.mean, missing) : fmt::format("{:.1f}{}", a.mean, missing);
+  return fmt::format("{:.1f} ± {:.1f}<br><small>{:.1f}..{:.1f}, fit ± {:.1f}{}</small>", a.mean, a.sd, a.min, a.max,
+                     err.mean, missing);
 }
 
 const char* kStyle = R"(
@@ -100,6 +131,62 @@ ul.findings li { margin-bottom: 0.4em; }
 
 }  // namespace
 
+std::string metrics_csv(const StudyReportInput& in) {
+  std::string out = "case,label,seed";
+  for (const SummaryMetric& m : summary_metrics()) {
+    out += ',';
+    out += m.key;
+  }
+  out += ",shape,warnings,wall_seconds,particle_steps_per_second,particles\n";
+  for (const StudyCaseResult& c : in.cases) {
+    for (const StudyRunResult& run : c.runs) {
+      CaseSummary s = run.summary;
+      // The element test is the case's (one per case): on every row of it.
+      s.phi_peak_deg = c.summary.phi_peak_deg;
+      s.phi_cs_deg = c.summary.phi_cs_deg;
+      // Appended piece by piece: `out += a + "," + b` trips GCC 12's false -Wrestrict (GCC bug 105651).
+      out += s.name;
+      out += ',';
+      out += s.label;
+      out += ',';
+      if (s.replicate) out += std::to_string(s.seed);
+      for (const SummaryMetric& m : summary_metrics()) {
+        out += ',';
+        out += csv_number(s.*m.field);
+      }
+      out += ',';
+      out += s.shape;
+      out += ',';
+      out += std::to_string(s.warnings.size());
+      for (double x : {s.cost.wall_seconds, s.cost.particle_steps_per_second, s.cost.particles}) {
+        out += ',';
+        out += csv_number(x);
+      }
+      out += '\n';
+    }
+  }
+  return out;
+}
+
+// The spread of one metric of a case: the element angles are the case's own (one test), the
+// others over its analysed replicates.
+static Spread case_metric_spread(const StudyCaseResult& c, double CaseSummary::*field) {
+  if (field == &CaseSummary::phi_peak_deg || field == &CaseSummary::phi_cs_deg) return spread_of({c.summary.*field});
+  return c.ensemble.spread(field);
+}
+
+std::string case_summary_csv(const StudyReportInput& in) {
+  std::string out = "case,label,metric,n,mean,sd,min,max\n";
+  for (const StudyCaseResult& c : in.cases) {
+    for (const SummaryMetric& m : summary_metrics()) {
+      const Spread s = case_metric_spread(c, m.field);
+      out += fmt::format("{},{},{},{},{},{},{},{}\n", c.summary.name, c.summary.label, m.key, s.n, csv_number(s.mean),
+                         csv_number(s.sd), csv_number(s.min), csv_number(s.max));
+    }
+  }
+  return out;
+}
+
 fs::path write_study_report(const fs::path& dir, const StudyReportInput& in) {
   std::error_code ec;
   fs::create_directories(dir, ec);
@@ -117,28 +204,57 @@ fs::path write_study_report(const fs::path& dir, const StudyReportInput& in) {
   for (const StudyCaseResult& c : in.cases)
     if (c.contour_analysis) plot::write_displacement_contours_png(dir / contour_file(c), *c.contour_analysis, 900);
   write_ground_reaction_chart(dir / "ground_reaction.png", in);
+  for (const StudyCaseResult& c : in.cases)
+    if (c.ensemble.replicates.size() > 1) write_replicate_chart(dir / replicate_chart_file(c), c);
 
   std::vector<CaseSummary> summaries;
+  std::vector<CaseEnsemble> ensembles;
   std::vector<std::vector<std::pair<std::string, std::string>>> parameters;
+  bool replicated = false;
   for (const StudyCaseResult& c : in.cases) {
     summaries.push_back(c.summary);
+    ensembles.push_back(c.ensemble);
     parameters.push_back(c.parameters);
+    replicated = replicated || c.runs.size() > 1;
   }
-  const std::vector<std::string> findings = study_findings(summaries, in.settings.angle_of_draw_deg);
+  const std::vector<std::string> findings = study_findings(ensembles, in.settings.angle_of_draw_deg);
   const std::vector<ParameterDifference> differences = differing_parameters(parameters);
 
   Json summary = Json::object();
   summary.set("study", in.study_name);
   summary.set("scale", in.scale);
   Json cases = Json::array();
-  for (const CaseSummary& s : summaries) cases.push_back(to_json(s));
+  for (const StudyCaseResult& c : in.cases) {
+    // The case's values (the replicates' means), its spreads and each run.
+    Json j = to_json(c.summary);
+    j.set("n", static_cast<double>(c.ensemble.replicates.size()));
+    Json spreads = Json::object();
+    for (const SummaryMetric& m : summary_metrics()) spreads.set(m.key, to_json(case_metric_spread(c, m.field)));
+    j.set("spread", spreads);
+    Json runs = Json::array();
+    for (const StudyRunResult& r : c.runs) {
+      // Each run's measured values (its cost and folder are in metrics.csv and on the page: the
+      // numbers here stay the same for the same runs wherever and however fast they ran).
+      const Json all = to_json(r.summary);  // named: a temporary's members() would dangle in the loop
+      Json run = Json::object();
+      for (const auto& [key, value] : all.members())
+        if (key != "cost") run.set(key, value);
+      run.set("analysed", r.analysed);
+      runs.push_back(run);
+    }
+    j.set("runs", runs);
+    if (std::isfinite(c.element_confining)) j.set("element_confining_Pa", c.element_confining);
+    cases.push_back(j);
+  }
   summary.set("cases", cases);
+  summary.set("spread_statistic", "sample standard deviation (n - 1) over each case's analysed runs, and min..max");
   Json finding_list = Json::array();
   for (const std::string& f : findings) finding_list.push_back(f);
   summary.set("findings", finding_list);
   summary.set("strain_scale_max", vmax);
   write_text_atomically(dir / "summary.json", summary.dump() + "\n");
   write_text_atomically(dir / "metrics.csv", metrics_csv(in));
+  write_text_atomically(dir / "case_summary.csv", case_summary_csv(in));
 
   const std::string contours_at = format_mm(in.settings.contours_at);
   std::string h;
@@ -154,7 +270,8 @@ fs::path write_study_report(const fs::path& dir, const StudyReportInput& in) {
   h += "<h2>Findings</h2>\n<ul class=\"findings\">\n";
   for (const std::string& f : findings) h += "<li>" + markup_escape(f) + "</li>\n";
   h += "</ul>\n<p class=\"lead\">Computed from the metrics below, in the order the study lists its cases; changes "
-       "within a quantity's resolution count as none (docs/study.md).</p>\n";
+       "within a quantity's resolution, or within the sum of two cases' seed-to-seed standard deviations, count as "
+       "none (docs/study.md).</p>\n";
 
   h += "<h2>Maximum shear strain at the final displacement</h2>\n";
   if (has_panel) {
@@ -181,25 +298,56 @@ fs::path write_study_report(const fs::path& dir, const StudyReportInput& in) {
        "stress against displacement, one curve per case\"><figcaption>The trapdoor's stress over its value before "
        "lowering (1: the dotted line) against its displacement over its width; the fall is the arching.</figcaption>"
        "</figure>\n";
+  for (const StudyCaseResult& c : in.cases) {
+    if (c.ensemble.replicates.size() < 2) continue;
+    h += fmt::format("<figure class=\"chart\"><img src=\"{}\" alt=\"Ground reaction curves of the seeds of {}\">"
+                     "<figcaption>{}: each packing seed and their mean.</figcaption></figure>\n",
+                     markup_escape(replicate_chart_file(c)), markup_escape(c.summary.label),
+                     markup_escape(c.summary.label));
+  }
 
-  h += "<h2>Mechanism metrics</h2>\n<div class=\"scroll\"><table>\n<tr><th class=\"l\">case</th><th>δ/B</th>"
-       "<th>band angle to the vertical (°) mean (left / right)</th><th>height reached / B</th><th>band width (d)</th>"
-       "<th>zone at surface / B</th><th>zone at mid-height / B = shape ratio</th><th>shape</th><th>least trapdoor load</th>"
-       "<th>at δ/B</th><th>final trapdoor load</th></tr>\n";
-  for (const CaseSummary& s : summaries) {
-    const double b = s.trapdoor_width;
-    h += fmt::format("<tr><td class=\"l\">{}</td><td>{}</td><td>{} ({} / {})</td><td>{}</td><td>{}</td><td>{}</td>"
-                     "<td>{}</td><td class=\"l\">{}</td><td>{}</td><td>{}</td><td>{}</td></tr>\n",
-                     markup_escape(s.label), cell(s.travel / b, "{:.2f}"), cell(s.band_angle_deg, "{:.1f}"),
-                     cell(s.band_angle_left_deg, "{:.1f}"), cell(s.band_angle_right_deg, "{:.1f}"),
-                     cell(s.band_height / b, "{:.2f}"), cell(s.band_width_d, "{:.1f}"), cell(s.zone_surface / b, "{:.2f}"),
-                     cell(s.shape_ratio, "{:.2f}"), markup_escape(s.shape),
-                     cell(s.min_load_ratio, "{:.3f}"), cell(s.min_load_at_over_b, "{:.3f}"),
-                     cell(s.final_load_ratio, "{:.3f}"));
+  const bool element = in.settings.element_test;
+  h += "<h2>Mechanism metrics</h2>\n<div class=\"scroll\"><table>\n<tr><th class=\"l\">case</th><th>runs (n)</th>"
+       "<th>δ/B</th><th>band angle to the vertical (°), mean</th><th>left</th><th>right</th><th>height reached / B</th>"
+       "<th>band width (d)</th><th>zone at surface / B</th><th>zone at mid-height / B = shape ratio</th><th>shape</th>"
+       "<th>least trapdoor load</th><th>at δ/B</th><th>final trapdoor load</th>";
+  if (element) h += "<th>φ'<sub>peak</sub> (°)</th><th>φ'<sub>cs</sub> (°)</th>";
+  h += "<th>warnings</th></tr>\n";
+  for (const StudyCaseResult& c : in.cases) {
+    const CaseEnsemble& e = c.ensemble;
+    const std::size_t n = e.replicates.size();
+    auto over_b = [&](double CaseSummary::*field) {
+      return e.spread([field](const CaseSummary& r) { return r.*field / r.trapdoor_width; });
+    };
+    std::size_t warnings = 0;
+    for (const CaseSummary& r : e.replicates) warnings += r.warnings.empty() ? 0 : 1;
+    h += fmt::format("<tr><td class=\"l\">{}</td><td>{}</td><td>{}</td><td>{}</td><td>{}</td><td>{}</td><td>{}</td>"
+                     "<td>{}</td><td>{}</td><td>{}</td><td class=\"l\">{}</td><td>{}</td><td>{}</td><td>{}</td>",
+                     markup_escape(c.summary.label), n == 1 ? "n = 1" : fmt::format("{}", n),
+                     spread_cell(over_b(&CaseSummary::travel), n, "{:.2f}"),
+                     angle_cell(e, &CaseSummary::band_angle_deg, &CaseSummary::band_angle_error_deg),
+                     angle_cell(e, &CaseSummary::band_angle_left_deg, &CaseSummary::band_angle_left_error_deg),
+                     angle_cell(e, &CaseSummary::band_angle_right_deg, &CaseSummary::band_angle_right_error_deg),
+                     spread_cell(over_b(&CaseSummary::band_height), n, "{:.2f}"),
+                     spread_cell(e.spread(&CaseSummary::band_width_d), n, "{:.1f}"),
+                     spread_cell(over_b(&CaseSummary::zone_surface), n, "{:.2f}"),
+                     spread_cell(e.spread(&CaseSummary::shape_ratio), n, "{:.2f}"), markup_escape(c.summary.shape),
+                     spread_cell(e.spread(&CaseSummary::min_load_ratio), n, "{:.3f}"),
+                     spread_cell(e.spread(&CaseSummary::min_load_at_over_b), n, "{:.3f}"),
+                     spread_cell(e.spread(&CaseSummary::final_load_ratio), n, "{:.3f}"));
+    if (element)
+      h += fmt::format("<td>{}</td><td>{}</td>", cell(c.summary.phi_peak_deg, "{:.1f}"), cell(c.summary.phi_cs_deg, "{:.1f}"));
+    h += fmt::format("<td>{}</td></tr>\n", warnings == 0 ? "—" : fmt::format("{} of {} runs (see Findings)", warnings, n));
   }
   h += "</table></div>\n<p class=\"lead\">B: trapdoor width; d: mean particle diameter; loads over their value "
-       "before lowering. Per-case details: each case's <code>analysis/metrics.json</code>; all of it: "
-       "<a href=\"metrics.csv\">metrics.csv</a>, <a href=\"summary.json\">summary.json</a>.</p>\n";
+       "before lowering. A case of several packing seeds: mean ± sample standard deviation, the range min..max "
+       "below; (n = k): measured in k of its runs. Band angles: one run ± the standard error of the trace's fit; "
+       "several ± the seeds' standard deviation, with the mean fit error."
+       + std::string(element ? " φ': the case's virtual element test (one per case, cases/&lt;name&gt;/element/, "
+                               "docs/element.md); the seed's glass beads: 16.8° / 15.7°." : "") +
+       " Per-run details: each run's <code>analysis/metrics.json</code>; every run: <a href=\"metrics.csv\">metrics.csv"
+       "</a>; each case's mean, sd, min, max and n: <a href=\"case_summary.csv\">case_summary.csv</a>, "
+       "<a href=\"summary.json\">summary.json</a>.</p>\n";
 
   h += fmt::format("<h2>How large can the sinkhole get?</h2>\n<div class=\"scroll\"><table>\n<tr><th class=\"l\">case"
                    "</th><th>DEM surface zone, prototype (m)</th><th>class</th><th>supposition at {:g}° (m)</th><th>class"
@@ -229,14 +377,18 @@ fs::path write_study_report(const fs::path& dir, const StudyReportInput& in) {
     h += "</table></div>\n";
   }
 
-  h += "<h2>Runs</h2>\n<div class=\"scroll\"><table>\n<tr><th class=\"l\">case</th><th>particles</th><th>run time</th>"
-       "<th>M particle-steps/s</th><th>segments</th><th class=\"l\">folder</th></tr>\n";
+  h += "<h2>Runs</h2>\n<div class=\"scroll\"><table>\n<tr><th class=\"l\">case</th><th>seed</th><th>particles</th>"
+       "<th>run time</th><th>M particle-steps/s</th><th>segments</th><th class=\"l\">folder</th></tr>\n";
   for (const StudyCaseResult& c : in.cases) {
-    const CaseCost& k = c.summary.cost;
-    h += fmt::format("<tr><td class=\"l\">{}</td><td>{}</td><td>{}</td><td>{}</td><td>{}</td><td class=\"l\"><code>{}"
-                     "</code></td></tr>\n", markup_escape(c.summary.label), cell(k.particles, "{:.0f}"),
-                     duration(k.wall_seconds), cell(k.particle_steps_per_second / 1e6, "{:.2f}"),
-                     cell(k.segments, "{:.0f}"), markup_escape(c.run_dir.string()));
+    for (const StudyRunResult& r : c.runs) {
+      const CaseCost& k = r.summary.cost;
+      h += fmt::format("<tr><td class=\"l\">{}</td><td>{}</td><td>{}</td><td>{}</td><td>{}</td><td>{}</td>"
+                       "<td class=\"l\"><code>{}</code>{}</td></tr>\n", markup_escape(c.summary.label),
+                       r.summary.replicate ? std::to_string(r.summary.seed) : "its own", cell(k.particles, "{:.0f}"),
+                       duration(k.wall_seconds), cell(k.particle_steps_per_second / 1e6, "{:.2f}"),
+                       cell(k.segments, "{:.0f}"), markup_escape(r.run_dir.string()),
+                       r.analysed ? "" : " <span class=\"note\">" + markup_escape(r.missing_note) + "</span>");
+    }
   }
   h += "</table></div>\n<p class=\"lead\">Run time: wall clock summed over the segments that ended (a first run and "
        "each resume); work lost to a killed segment is not counted.</p>\n";

@@ -3,7 +3,7 @@
 // the same numbers for machines (summary.json, metrics.csv). Sections: findings (study_findings), the
 // Figure-7-style panel of maximum shear strain at the final displacement on one colour scale, vertical
 // displacement contours at report.contours_at, the ground reaction curves on one plot, the metrics
-// table, the sinkhole estimates, the parameters that differ, and each run's cost.
+// table (each metric as mean and spread over the case's replicates), the sinkhole estimates, the parameters that differ, and each run's cost.
 #include <filesystem>
 #include <string>
 #include <utility>
@@ -11,17 +11,32 @@
 
 #include "analysis/analysis_run.hpp"
 #include "study/case_summary.hpp"
+#include "study/replicate_statistics.hpp"
 #include "study/study_definition.hpp"
 
 namespace trapdem {
 
-struct StudyCaseResult {
-  CaseSummary summary;
+// One run of a case: its only run, or one replicate (one packing seed).
+struct StudyRunResult {
+  CaseSummary summary;                               // summary.replicate / seed say which
   std::filesystem::path run_dir;
+  bool analysed = false;
   const AnalysisResult* final_analysis = nullptr;    // at the final snapshot (null: not analysed)
   const AnalysisResult* contour_analysis = nullptr;  // at report.contours_at (null: no snapshot there)
+  std::string missing_note;                          // why an analysis is missing
+};
+
+struct StudyCaseResult {
+  CaseSummary summary;                               // the replicates' means (combine_replicates)
+  CaseEnsemble ensemble;                             // the analysed replicates and their means
+  std::vector<StudyRunResult> runs;                  // every run of the case, in seed order
+  std::filesystem::path run_dir;                     // the case's folder
+  std::filesystem::path figure_run;                  // the run the figures show (the first analysed)
+  const AnalysisResult* final_analysis = nullptr;    // of figure_run (null: none analysed)
+  const AnalysisResult* contour_analysis = nullptr;  // of figure_run at report.contours_at
   std::string missing_note;                          // why an analysis is missing, for the page
-  std::vector<std::pair<std::string, std::string>> parameters;  // resolved configuration, flattened
+  std::vector<std::pair<std::string, std::string>> parameters;  // figure_run's resolved configuration
+  double element_confining = kMissing;               // Pa, of the element test's angles (report.element_test)
 };
 
 struct StudyReportInput {
@@ -30,6 +45,11 @@ struct StudyReportInput {
   StudyReportSettings settings;
   std::vector<StudyCaseResult> cases;
 };
+
+// The report's files for scripts: one row per run (case, label, seed, every metric), and the
+// per-case spreads (case, label, metric, n, mean, sd, min, max).
+std::string metrics_csv(const StudyReportInput& input);
+std::string case_summary_csv(const StudyReportInput& input);
 
 // Writes the report into `report_dir` (created). Every file is written atomically; images are written
 // before the page that shows them. Returns the page's path.

@@ -21,6 +21,7 @@
 #include "io/atomic_file.hpp"
 #include "io/config.hpp"
 #include "io/text_file.hpp"
+#include "study/case_element_test.hpp"
 #include "study/parameter_differences.hpp"
 #include "study/run_analysis.hpp"
 #include "study/study_report.hpp"
@@ -51,6 +52,25 @@ std::string first_difference(const std::string& a, const std::string& b) {
   return "";
 }
 
+// The configuration a recipe resolves to (resolved.toml's text), checked as `trapdem run` checks it;
+// its packing seed into *seed if asked. Errors name the case.
+std::string resolved_recipe(const ConfigRecipe& recipe, const fs::path& presets, const std::string& case_name,
+                            std::uint64_t* seed) {
+  try {
+    Config config = Config::load_file(base_file(recipe, presets).string());
+    config.apply_overrides(recipe.overrides);
+    const ExperimentConfig experiment = ExperimentConfig::from(config);
+    if (seed) *seed = experiment.pluviation.seed;
+    return config.resolved_toml();
+  } catch (const InputError& e) {
+    throw InputError(fmt::format("case '{}': {}", case_name, e.what()));
+  }
+}
+
+std::string run_title(const StudyCase& c, const CaseRun& run) {
+  return run.replicate ? fmt::format("{} seed {}", c.name, run.seed) : c.name;
+}
+
 }  // namespace
 
 void log_study_line(const fs::path& out, const std::string& line, bool quiet) {
@@ -66,18 +86,36 @@ void log_study_line(const fs::path& out, const std::string& line, bool quiet) {
 }
 
 std::string resolved_case_configuration(const StudyCase& c, const StudyScale& scale, const fs::path& presets) {
-  const ConfigRecipe recipe = case_recipe(c, scale);
-  try {
-    Config config = Config::load_file(base_file(recipe, presets).string());
-    config.apply_overrides(recipe.overrides);
-    ExperimentConfig::from(config);
-    return config.resolved_toml();
-  } catch (const InputError& e) {
-    throw InputError(fmt::format("case '{}': {}", c.name, e.what()));
-  }
+  return resolved_recipe(case_recipe(c, scale), presets, c.name, nullptr);
 }
 
 fs::path case_directory(const fs::path& out, const StudyCase& study_case) { return out / "cases" / study_case.name; }
+
+fs::path element_directory(const fs::path& out, const StudyCase& study_case) {
+  return case_directory(out, study_case) / "element";
+}
+
+std::vector<CaseRun> case_runs(const StudyDefinition& study, const StudyCase& c, const StudyScale& scale,
+                               const fs::path& out, const fs::path& presets) {
+  const ConfigRecipe recipe = case_recipe(c, scale);
+  const ReplicateRequest& request = case_replicates(study, c, scale);
+  std::uint64_t case_seed = 0;
+  resolved_recipe(recipe, presets, c.name, &case_seed);
+  std::vector<CaseRun> runs;
+  for (std::uint64_t seed : replicate_seeds(request, case_seed)) {
+    CaseRun run;
+    run.seed = seed;
+    run.replicate = request.asked();
+    run.recipe = recipe;
+    run.dir = case_directory(out, c);
+    if (run.replicate) {
+      run.dir /= replicate_folder_name(seed);
+      run.recipe.overrides.push_back(fmt::format("pluviation.seed={}", seed));
+    }
+    runs.push_back(std::move(run));
+  }
+  return runs;
+}
 
 bool holds_study(const fs::path& out) { return fs::exists(study_record(out)); }
 
@@ -104,55 +142,140 @@ void claim_study_folder(const StudyDefinition& study, const StudyScale& scale, c
 bool run_study_cases(const StudyDefinition& study, const StudyScale& scale, const fs::path& out,
                      const StudyRunSettings& settings) {
   const bool quiet = settings.quiet;
-  // Every case's configuration first, and each against what its folder holds: a typo in the fourth
+  // Every run's configuration first, and each against what its folder holds: a typo in the fourth
   // case, or a case changed since it ran, should not wait for three runs.
+  std::vector<std::vector<CaseRun>> runs;
+  std::size_t total = 0;
   for (const StudyCase& c : study.cases) {
-    const std::string resolved = resolved_case_configuration(c, scale, settings.preset_directory);
-    const RunFolder run(case_directory(out, c));
-    const fs::path& dir = run.path();
-    if (!run.has_checkpoint() && !run_finished(run)) continue;
-    const std::string there = fs::exists(run.resolved_toml()) ? read_text_file(run.resolved_toml()) : "";
-    if (there != resolved)
-      throw InputError(fmt::format("{}: holds a run of another configuration than case '{}' now has ({}); remove "
-                                   "the folder to run the case again, or choose another --out",
-                                   dir.string(), c.name, first_difference(there, resolved)));
+    runs.push_back(case_runs(study, c, scale, out, settings.preset_directory));
+    total += runs.back().size();
+    for (const CaseRun& r : runs.back()) {
+      const std::string resolved = resolved_recipe(r.recipe, settings.preset_directory, c.name, nullptr);
+      const RunFolder run(r.dir);
+      if (!run.has_checkpoint() && !run_finished(run)) continue;
+      const std::string there = fs::exists(run.resolved_toml()) ? read_text_file(run.resolved_toml()) : "";
+      if (there != resolved)
+        throw InputError(fmt::format("{}: holds a run of another configuration than case '{}' now has ({}); remove "
+                                     "the folder to run the case again, or choose another --out",
+                                     r.dir.string(), c.name, first_difference(there, resolved)));
+    }
+    if (study.report.element_test) {  // its keys checked now too
+      const ConfigRecipe recipe = case_recipe(c, scale);
+      case_element_test(c, base_file(recipe, settings.preset_directory), recipe, study.report);
+    }
   }
 
+  std::size_t counted = 0;
   for (std::size_t k = 0; k < study.cases.size(); ++k) {
     const StudyCase& c = study.cases[k];
-    const RunFolder folder(case_directory(out, c));
-    const fs::path& dir = folder.path();
-    const std::string counter = fmt::format("[{}/{}] {}", k + 1, study.cases.size(), c.name);
-    const bool has_checkpoint = folder.has_checkpoint();
-    FolderRunOptions run;
-    run.threads = settings.threads;
-    run.quiet = quiet;
-    if (run_finished(folder)) {
-      log_study_line(out, fmt::format("{}: finished before, skipped", counter), quiet);
-      continue;
+    for (const CaseRun& r : runs[k]) {
+      const RunFolder folder(r.dir);
+      const fs::path& dir = folder.path();
+      const std::string counter = fmt::format("[{}/{}] {}", ++counted, total, run_title(c, r));
+      const bool has_checkpoint = folder.has_checkpoint();
+      FolderRunOptions run;
+      run.threads = settings.threads;
+      run.quiet = quiet;
+      if (run_finished(folder)) {
+        log_study_line(out, fmt::format("{}: finished before, skipped", counter), quiet);
+        continue;
+      }
+      if (has_checkpoint) {
+        log_study_line(out, fmt::format("{}: resuming from its checkpoint", counter), quiet);
+        run.resume_dir = dir;
+      } else {
+        // Killed before its first checkpoint: nothing to keep.
+        if (fs::exists(dir)) fs::remove_all(dir);
+        log_study_line(out, fmt::format("{}: running ({})", counter, c.label), quiet);
+        run.config_file = base_file(r.recipe, settings.preset_directory);
+        run.overrides = r.recipe.overrides;
+        run.out_dir = dir;
+      }
+      if (!run_in_folder(run)) {
+        log_study_line(out, fmt::format("{}: interrupted (checkpoint written); run the same command again to carry on",
+                                        counter), quiet);
+        return false;
+      }
+      log_study_line(out, fmt::format("{}: finished", counter), quiet);
     }
-    if (has_checkpoint) {
-      log_study_line(out, fmt::format("{}: resuming from its checkpoint", counter), quiet);
-      run.resume_dir = dir;
-    } else {
-      // Killed before its first checkpoint: nothing to keep.
-      if (fs::exists(dir)) fs::remove_all(dir);
+    if (study.report.element_test) {
       const ConfigRecipe recipe = case_recipe(c, scale);
-      log_study_line(out, fmt::format("{}: running ({})", counter, c.label), quiet);
-      run.config_file = base_file(recipe, settings.preset_directory);
-      run.overrides = recipe.overrides;
-      run.out_dir = dir;
+      const CaseElementTest test =
+          case_element_test(c, base_file(recipe, settings.preset_directory), recipe, study.report);
+      const std::string title = fmt::format("{} element test", c.name);
+      const fs::path dir = element_directory(out, c);
+      if (element_test_finished(test, dir)) {
+        log_study_line(out, fmt::format("{}: finished before, skipped", title), quiet);
+      } else {
+        log_study_line(out, fmt::format("{}: running ({} particles)", title, test.setup.settings.particles), quiet);
+        run_case_element_test(test, dir, settings.threads);
+        log_study_line(out, fmt::format("{}: finished", title), quiet);
+      }
     }
-    if (!run_in_folder(run)) {
-      log_study_line(out, fmt::format("{}: interrupted (checkpoint written); run the same command again to carry on", counter), quiet);
-      return false;
-    }
-    log_study_line(out, fmt::format("{}: finished", counter), quiet);
   }
   return true;
 }
 
-fs::path write_study_outputs(const StudyDefinition& study, const StudyScale& scale, const fs::path& out, bool quiet) {
+namespace {
+
+// One finished run analysed (its analysis/ written) and summarised; the analyses are kept in
+// `finals` and `contours` for the report's figures. A run that cannot be analysed (too few
+// particles in view, say) gets a note and does not hide the others.
+StudyRunResult summarise_run(const StudyDefinition& study, const StudyCase& c, const CaseRun& run, bool quiet,
+                             std::vector<std::unique_ptr<AnalysisResult>>& finals,
+                             std::vector<std::unique_ptr<AnalysisResult>>& contours) {
+  const RunFolder folder(run.dir);
+  StudyRunResult r;
+  r.run_dir = run.dir;
+  r.summary.name = c.name;
+  r.summary.label = c.label;
+  r.summary.replicate = run.replicate;
+  r.summary.seed = run.replicate ? run.seed : 0;
+  if (!run_finished(folder)) {
+    r.missing_note = "the run has not finished";
+    return r;
+  }
+  r.summary.cost = read_case_cost(run.dir);
+  AnalyzeOptions a;
+  a.dir = run.dir.string();
+  a.quiet = true;
+  try {
+    finals.push_back(std::make_unique<AnalysisResult>(analyze_and_write(a)));
+  } catch (const InputError& e) {
+    r.missing_note = fmt::format("not analysed: {}", e.what());
+    return r;
+  }
+  AnalysisResult& final_analysis = *finals.back();
+  final_analysis.geometry.name = c.label;
+  r.final_analysis = &final_analysis;
+  read_mechanism_metrics(metrics_json(final_analysis), r.summary);
+
+  AnalyzeOptions at = a;
+  at.at = fmt::format("{}m", study.report.contours_at);
+  try {
+    contours.push_back(std::make_unique<AnalysisResult>(analyze_directory(at)));
+    contours.back()->geometry.name = c.label;
+    r.contour_analysis = contours.back().get();
+  } catch (const InputError& e) {
+    r.missing_note = fmt::format("no contours at {}: {}", format_mm(study.report.contours_at), e.what());
+  }
+  const fs::path csv = folder.trapdoor_csv();
+  if (fs::exists(csv))
+    read_ground_reaction(parse_ground_reaction_csv(read_text_file(csv), csv.string()), r.summary.trapdoor_width,
+                         r.summary);
+  try {
+    read_sinkhole_comparison(compare_with_dem(read_dem_run(run.dir), study.report.angle_of_draw_deg), r.summary);
+  } catch (const InputError& e) {
+    if (!quiet) fmt::print("{}: no sinkhole estimate: {}\n", run_title(c, run), e.what());
+  }
+  r.analysed = true;
+  return r;
+}
+
+}  // namespace
+
+fs::path write_study_outputs(const StudyDefinition& study, const StudyScale& scale, const fs::path& out, bool quiet,
+                             const fs::path& preset_directory) {
   StudyReportInput input;
   input.study_name = study.name;
   input.description = study.description;
@@ -162,54 +285,42 @@ fs::path write_study_outputs(const StudyDefinition& study, const StudyScale& sca
   // Results live here so that the report can point at them.
   std::vector<std::unique_ptr<AnalysisResult>> finals, contours;
   for (const StudyCase& c : study.cases) {
-    const RunFolder run(case_directory(out, c));
-    const fs::path& dir = run.path();
     StudyCaseResult r;
-    r.run_dir = dir;
-    r.summary.name = c.name;
-    r.summary.label = c.label;
-    if (!run_finished(run)) {
-      r.missing_note = "the run has not finished";
-      input.cases.push_back(std::move(r));
-      continue;
+    r.run_dir = case_directory(out, c);
+    std::vector<CaseSummary> analysed;
+    for (const CaseRun& run : case_runs(study, c, scale, out, preset_directory)) {
+      r.runs.push_back(summarise_run(study, c, run, quiet, finals, contours));
+      const StudyRunResult& last = r.runs.back();
+      if (!last.analysed) continue;
+      analysed.push_back(last.summary);
+      if (!r.final_analysis) {  // the figures show the first analysed run
+        r.final_analysis = last.final_analysis;
+        r.contour_analysis = last.contour_analysis;
+        r.figure_run = last.run_dir;
+        r.parameters = resolved_parameters(last.run_dir);
+        if (!last.contour_analysis) r.missing_note = last.missing_note;
+      }
     }
-    AnalyzeOptions a;
-    a.dir = dir.string();
-    a.quiet = true;
-    try {
-      finals.push_back(std::make_unique<AnalysisResult>(analyze_and_write(a)));
-    } catch (const InputError& e) {
-      // One case that cannot be analysed (too few particles in view, say) does not hide the others.
-      r.missing_note = fmt::format("not analysed: {}", e.what());
-      r.summary.cost = read_case_cost(dir);
-      input.cases.push_back(std::move(r));
-      continue;
+    if (analysed.empty()) {
+      r.summary.name = c.name;
+      r.summary.label = c.label;
+      for (const StudyRunResult& run : r.runs)
+        if (!run.missing_note.empty()) r.missing_note = run.missing_note;
+      if (r.missing_note.empty()) r.missing_note = "no run";
     }
-    AnalysisResult& final_analysis = *finals.back();
-    final_analysis.geometry.name = c.label;
-    r.final_analysis = &final_analysis;
-    read_mechanism_metrics(metrics_json(final_analysis), r.summary);
-
-    AnalyzeOptions at = a;
-    at.at = fmt::format("{}m", study.report.contours_at);
-    try {
-      contours.push_back(std::make_unique<AnalysisResult>(analyze_directory(at)));
-      contours.back()->geometry.name = c.label;
-      r.contour_analysis = contours.back().get();
-    } catch (const InputError& e) {
-      r.missing_note = fmt::format("no contours at {}: {}", format_mm(study.report.contours_at), e.what());
+    r.ensemble = make_ensemble(std::move(analysed));
+    if (r.ensemble.replicates.empty())
+      r.ensemble.mean = r.summary;
+    else
+      r.summary = r.ensemble.mean;
+    if (study.report.element_test) {
+      const CaseElementAngles angles = read_case_element_angles(element_directory(out, c));
+      r.summary.phi_peak_deg = angles.phi_peak_deg;
+      r.summary.phi_cs_deg = angles.phi_cs_deg;
+      r.ensemble.mean.phi_peak_deg = angles.phi_peak_deg;
+      r.ensemble.mean.phi_cs_deg = angles.phi_cs_deg;
+      r.element_confining = angles.confining;
     }
-    const fs::path csv = run.trapdoor_csv();
-    if (fs::exists(csv))
-      read_ground_reaction(parse_ground_reaction_csv(read_text_file(csv), csv.string()), r.summary.trapdoor_width,
-                           r.summary);
-    r.summary.cost = read_case_cost(dir);
-    try {
-      read_sinkhole_comparison(compare_with_dem(read_dem_run(dir), study.report.angle_of_draw_deg), r.summary);
-    } catch (const InputError& e) {
-      if (!quiet) fmt::print("{}: no sinkhole estimate: {}\n", c.name, e.what());
-    }
-    r.parameters = resolved_parameters(dir);
     input.cases.push_back(std::move(r));
   }
   return write_study_report(out / "report", input);

@@ -3,8 +3,10 @@
 // then analyses them and writes DIR/report/index.html (docs/study.md). Started again on the same
 // folder it skips finished cases and resumes an unfinished one from its checkpoint, so an
 // interrupted study loses at most the work since the last checkpoint.
+#include <cstdint>
 #include <filesystem>
 #include <string>
+#include <vector>
 
 #include "study/study_definition.hpp"
 
@@ -23,6 +25,22 @@ std::string resolved_case_configuration(const StudyCase& study_case, const Study
 
 std::filesystem::path case_directory(const std::filesystem::path& out, const StudyCase& study_case);
 
+// One run of a case: its only run (no replicates asked: cases/<name>/, the configuration's own seed)
+// or one of its replicates (cases/<name>/seed-<seed>/, pluviation.seed = seed; study/replicates.hpp).
+struct CaseRun {
+  std::uint64_t seed = 0;              // the packing seed (pluviation.seed) it runs with
+  bool replicate = false;
+  std::filesystem::path dir;
+  ConfigRecipe recipe;                 // case_recipe, then pluviation.seed for a replicate
+};
+// The case's runs in seed order (the configuration is resolved for the case's own seed). Throws
+// InputError naming the case if its configuration does not validate.
+std::vector<CaseRun> case_runs(const StudyDefinition& study, const StudyCase& study_case, const StudyScale& scale,
+                               const std::filesystem::path& out, const std::filesystem::path& preset_directory);
+
+// The case's element test (report.element_test): its folder, cases/<name>/element/.
+std::filesystem::path element_directory(const std::filesystem::path& out, const StudyCase& study_case);
+
 // Runs (or resumes, or skips) every case of `study` at `scale` into out/cases/<name>. Returns false
 // if a run was interrupted (SIGINT/SIGTERM: its checkpoint is written). Throws InputError if a case's
 // folder holds a run of another configuration.
@@ -38,9 +56,10 @@ bool holds_study(const std::filesystem::path& out);
 bool run_study_in_folder(const StudyDefinition& study, const StudyScale& scale, const std::filesystem::path& out,
                          const StudyRunSettings& settings);
 
-// Analyses every finished case and writes out/report/. Returns the page's path.
+// Analyses every finished run and writes out/report/. Returns the page's path.
 std::filesystem::path write_study_outputs(const StudyDefinition& study, const StudyScale& scale,
-                                          const std::filesystem::path& out, bool quiet);
+                                          const std::filesystem::path& out, bool quiet,
+                                          const std::filesystem::path& preset_directory = {});
 
 // Appends a line to out/study.log (time-stamped) and prints it unless quiet.
 void log_study_line(const std::filesystem::path& out, const std::string& line, bool quiet);
