@@ -337,6 +337,13 @@ std::string fields_xdmf(const AnalysisResult& r, const std::string& h5) {
   s += "      <Attribute Name=\"vertical_displacement\" AttributeType=\"Scalar\" Center=\"Node\">\n";
   s += fmt::format("        <DataItem Dimensions=\"{}\" NumberType=\"Float\" Precision=\"8\" Format=\"HDF\">{}:/nodes/vertical_displacement</DataItem>\n", n, h5);
   s += "      </Attribute>\n";
+  // The particles at the nodes, to match them with snapshots.h5 (id) or draw them as spheres (radius).
+  s += "      <Attribute Name=\"id\" AttributeType=\"Scalar\" Center=\"Node\">\n";
+  s += fmt::format("        <DataItem Dimensions=\"{}\" NumberType=\"Int\" Precision=\"8\" Format=\"HDF\">{}:/nodes/id</DataItem>\n", n, h5);
+  s += "      </Attribute>\n";
+  s += "      <Attribute Name=\"radius\" AttributeType=\"Scalar\" Center=\"Node\">\n";
+  s += fmt::format("        <DataItem Dimensions=\"{}\" NumberType=\"Float\" Precision=\"8\" Format=\"HDF\">{}:/nodes/radius</DataItem>\n", n, h5);
+  s += "      </Attribute>\n";
   s += "    </Grid>\n  </Domain>\n</Xdmf>\n";
   return s;
 }

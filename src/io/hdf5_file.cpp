@@ -227,6 +227,11 @@ std::vector<std::string> Hdf5Group::children() const {
   return names;
 }
 
+void Hdf5Group::remove(std::string_view name) const {
+  const std::string key(name);
+  if (H5Ldelete(id(), key.c_str(), H5P_DEFAULT) < 0) fail(describe(name), "cannot remove the link");
+}
+
 void Hdf5Group::write_doubles(std::string_view name, std::span<const double> data, std::string_view units) const {
   write_dataset(*this, name, H5T_IEEE_F64LE, H5T_NATIVE_DOUBLE, data.data(), data.size(), 0, units);
 }

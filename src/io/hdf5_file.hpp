@@ -50,6 +50,7 @@ class Hdf5Group {
   Hdf5Group create_group(std::string_view name) const;
   Hdf5Group group(std::string_view name) const;        // FileError if absent
   std::vector<std::string> children() const;           // child names in name order
+  void remove(std::string_view name) const;             // unlinks a child (its space is not reclaimed)
 
   // Datasets: 1-D of length N, or N x 3 for vectors. `units` (optional) is stored as the
   // dataset's string attribute "units".

@@ -15,6 +15,20 @@ namespace {
 constexpr const char* kFormat = "trapdem-snapshots";
 constexpr std::int64_t kVersion = 1;
 constexpr const char* kRoot = "snapshots";
+// 0, 1, 2, ... (int32): the vertex list of the XDMF's Polyvertex topology. ParaView's XDMF 3 reader
+// makes no cells from a Polyvertex topology without one (points, 0 cells: its default Surface view
+// is then empty), so each grid takes the first N entries of this array (an XDMF hyperslab).
+constexpr const char* kVertexIndex = "vertex_index";
+
+// Makes the file's vertex index at least n long (it only grows: the first n entries of a longer
+// one are the same).
+void ensure_vertex_index(const Hdf5Group& root, std::size_t n) {
+  if (root.has(kVertexIndex) && root.dataset_length(kVertexIndex) >= n) return;
+  if (root.has(kVertexIndex)) root.remove(kVertexIndex);
+  std::vector<std::uint32_t> index(n);
+  for (std::size_t i = 0; i < n; ++i) index[i] = static_cast<std::uint32_t>(i);
+  root.write_uint32s(kVertexIndex, index);
+}
 
 std::string group_name(std::size_t index) { return fmt::format("{:06d}", index); }
 
@@ -93,6 +107,7 @@ std::string append_snapshot(const fs::path& h5_path, const Snapshot& s) {
     g.write_doubles("radius", s.radius, "m");
     if (s.image.empty()) g.write_int3s("image", std::vector<Int3>(n));
     else g.write_int3s("image", s.image);
+    ensure_vertex_index(file, n);
     file.write_image(temporary);
   });
   write_snapshot_xdmf(h5_path);
@@ -131,7 +146,8 @@ std::vector<Snapshot> read_snapshots(const fs::path& h5_path) {
   return out;
 }
 
-std::string snapshot_xdmf(const std::string& h5_file_name, const std::vector<SnapshotInfo>& snapshots) {
+std::string snapshot_xdmf(const std::string& h5_file_name, const std::vector<SnapshotInfo>& snapshots,
+                          std::size_t vertex_index_length) {
   const std::string file = markup_escape(h5_file_name);
   std::string x;
   x += "<?xml version=\"1.0\" ?>\n";
@@ -157,7 +173,16 @@ std::string snapshot_xdmf(const std::string& h5_file_name, const std::vector<Sna
     x += fmt::format("        <Information Name=\"stage\" Value=\"{}\"/>\n", markup_escape(s.stage));
     x += fmt::format("        <Information Name=\"trapdoor_displacement\" Value=\"{}\"/>\n", s.trapdoor_displacement);
     x += fmt::format("        <Information Name=\"step\" Value=\"{}\"/>\n", s.step);
-    x += fmt::format("        <Topology TopologyType=\"Polyvertex\" NumberOfElements=\"{}\" NodesPerElement=\"1\"/>\n", n);
+    x += fmt::format("        <Topology TopologyType=\"Polyvertex\" NumberOfElements=\"{}\" NodesPerElement=\"1\">\n", n);
+    if (vertex_index_length >= n) {
+      // Vertex i is particle row i: the first n entries of the vertex index (start 0, stride 1, count n).
+      x += fmt::format("          <DataItem ItemType=\"HyperSlab\" Dimensions=\"{}\" Type=\"HyperSlab\">\n", n);
+      x += fmt::format("            <DataItem Dimensions=\"3 1\" Format=\"XML\">0 1 {}</DataItem>\n", n);
+      x += fmt::format("            <DataItem Dimensions=\"{}\" NumberType=\"UInt\" Precision=\"4\" Format=\"HDF\">{}:/{}</DataItem>\n",
+                       vertex_index_length, file, kVertexIndex);
+      x += "          </DataItem>\n";
+    }
+    x += "        </Topology>\n";
     x += "        <Geometry GeometryType=\"XYZ\">\n" + item("position", 3, "Float") + "        </Geometry>\n";
     x += attribute("radius", "Scalar", 1, "Float");
     x += attribute("id", "Scalar", 1, "Int");
@@ -170,8 +195,10 @@ std::string snapshot_xdmf(const std::string& h5_file_name, const std::vector<Sna
 }
 
 void write_snapshot_xdmf(const fs::path& h5_path) {
-  const std::vector<SnapshotInfo> snapshots = list_snapshots(h5_path);
-  write_text_atomically(xdmf_path_of(h5_path), snapshot_xdmf(h5_path.filename().string(), snapshots));
+  const Hdf5File file = Hdf5File::open_read(h5_path);
+  const std::vector<SnapshotInfo> snapshots = list_in(file);
+  const std::size_t vertex_index_length = file.has(kVertexIndex) ? file.dataset_length(kVertexIndex) : 0;
+  write_text_atomically(xdmf_path_of(h5_path), snapshot_xdmf(h5_path.filename().string(), snapshots, vertex_index_length));
 }
 
 }  // namespace trapdem

@@ -60,10 +60,13 @@ Snapshot read_snapshot(const std::filesystem::path& h5_path, const std::string& 
 std::vector<Snapshot> read_snapshots(const std::filesystem::path& h5_path);
 
 // The XDMF 3 text for `snapshots` stored in the HDF5 file named `h5_file_name` (relative to the
-// .xmf file's folder): a temporal collection of Polyvertex grids with attributes radius, id,
-// velocity and angular_velocity. Snapshots without particles are left out (ParaView rejects
+// .xmf file's folder): a temporal collection of Polyvertex grids, one vertex cell per particle,
+// with attributes radius, id, velocity and angular_velocity. The cells' vertex list is the file's
+// /vertex_index (0, 1, 2, ...; `vertex_index_length` long); a snapshot with more particles than
+// that gets points without cells. Snapshots without particles are left out (ParaView rejects
 // empty grids).
-std::string snapshot_xdmf(const std::string& h5_file_name, const std::vector<SnapshotInfo>& snapshots);
+std::string snapshot_xdmf(const std::string& h5_file_name, const std::vector<SnapshotInfo>& snapshots,
+                          std::size_t vertex_index_length);
 // Writes snapshot_xdmf(...) for the file at h5_path to h5_path with the .xmf extension, atomically.
 void write_snapshot_xdmf(const std::filesystem::path& h5_path);
 

@@ -82,6 +82,12 @@ TEST(Snapshots, AppendListReadAndXdmf) {
   EXPECT_NE(xmf.find(">snapshots.h5:/snapshots/000002/position</DataItem>"), std::string::npos) << xmf;
   EXPECT_NE(xmf.find("snapshots.h5:/snapshots/000001/radius"), std::string::npos);
   EXPECT_NE(xmf.find("<Time Value=\"2.25\"/>"), std::string::npos);
+  // ParaView makes cells (what its default view draws) only from an explicit vertex list: the
+  // first N entries of /vertex_index, 0, 1, 2, ...
+  EXPECT_EQ(f.read_uint32s("vertex_index"), (std::vector<std::uint32_t>{0, 1, 2, 3, 4, 5, 6}));
+  EXPECT_EQ(count(xmf, "ItemType=\"HyperSlab\" Dimensions=\"5\""), 1u) << xmf;
+  EXPECT_EQ(count(xmf, ">0 1 7</DataItem>"), 1u);
+  EXPECT_EQ(count(xmf, "NumberType=\"UInt\" Precision=\"4\" Format=\"HDF\">snapshots.h5:/vertex_index<"), 2u);
   EXPECT_NE(xmf.find("lowering &amp; &lt;done&gt;"), std::string::npos);
   EXPECT_EQ(dir.entry_count(), 2u);  // snapshots.h5, snapshots.xmf: no temporaries
 }
