@@ -3,10 +3,12 @@ BUILD ?= build
 ASAN_BUILD ?= build-asan
 JOBS ?= $(shell nproc)
 CMAKE_FLAGS ?=
+# make install: the program goes to $(PREFIX)/bin, the presets to $(PREFIX)/share/trapdem/presets.
+PREFIX ?= /usr/local
 # ccache, where installed, shares compiled objects between build folders (build, build-asan).
 LAUNCHER := $(if $(shell command -v ccache),-DCMAKE_CXX_COMPILER_LAUNCHER=ccache)
 
-.PHONY: all deps configure build test test-slow test-asan demo study bench bench-peers clean
+.PHONY: all deps configure build test test-slow test-asan demo study bench bench-peers install clean
 
 all: build
 
@@ -49,6 +51,9 @@ bench: build
 bench-peers: build
 	@bash scripts/install-deps --peers
 	@bash bench/run-peers.sh $(BUILD)
+
+install: build
+	@cmake --install $(BUILD) --prefix $(PREFIX)
 
 clean:
 	rm -rf $(BUILD) $(BUILD).cmake.log $(ASAN_BUILD) $(ASAN_BUILD).cmake.log

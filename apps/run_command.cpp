@@ -7,6 +7,7 @@
 #include "core/errors.hpp"
 #include "experiment/folder_run.hpp"
 #include "experiment/presets.hpp"
+#include "installed_presets.hpp"
 
 namespace fs = std::filesystem;
 
@@ -14,6 +15,7 @@ namespace trapdem::app {
 
 fs::path preset_directory() {
   if (const char* env = std::getenv("TRAPDEM_PRESETS")) return env;
+  if (const auto installed = installed_preset_directory()) return *installed;
   return TRAPDEM_PRESET_DIR;
 }
 

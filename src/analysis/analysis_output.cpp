@@ -331,12 +331,18 @@ std::string fields_xdmf(const AnalysisResult& r, const std::string& h5) {
   if (r.has_incremental) {
     for (const char* name : {"gamma_max_incremental", "volumetric_strain_incremental"}) cell(name);
   }
-  s += "      <Attribute Name=\"displacement\" AttributeType=\"Vector\" Center=\"Node\">\n";
-  s += fmt::format("        <DataItem Dimensions=\"{} 3\" NumberType=\"Float\" Precision=\"8\" Format=\"HDF\">{}:/nodes/displacement</DataItem>\n", n, h5);
-  s += "      </Attribute>\n";
-  s += "      <Attribute Name=\"vertical_displacement\" AttributeType=\"Scalar\" Center=\"Node\">\n";
-  s += fmt::format("        <DataItem Dimensions=\"{}\" NumberType=\"Float\" Precision=\"8\" Format=\"HDF\">{}:/nodes/vertical_displacement</DataItem>\n", n, h5);
-  s += "      </Attribute>\n";
+  // Node attributes; id and radius are the particles at the nodes, to match them with snapshots.h5
+  // or draw them as spheres.
+  auto node = [&](const char* name, const char* kind, const char* dims, const char* type) {
+    s += fmt::format("      <Attribute Name=\"{}\" AttributeType=\"{}\" Center=\"Node\">\n", name, kind);
+    s += fmt::format("        <DataItem Dimensions=\"{}{}\" NumberType=\"{}\" Precision=\"8\" Format=\"HDF\">{}:/nodes/{}</DataItem>\n",
+                     n, dims, type, h5, name);
+    s += "      </Attribute>\n";
+  };
+  node("displacement", "Vector", " 3", "Float");
+  node("vertical_displacement", "Scalar", "", "Float");
+  node("id", "Scalar", "", "Int");
+  node("radius", "Scalar", "", "Float");
   s += "    </Grid>\n  </Domain>\n</Xdmf>\n";
   return s;
 }

@@ -27,25 +27,7 @@ std::atomic<int> g_signal{0};
 extern "C" void on_signal(int sig) { g_signal = sig; }
 
 // Snapshots written after the checkpoint would be written again by the resumed run: drop them.
-void drop_snapshots_after(const fs::path& h5, std::int64_t step) {
-  if (!fs::exists(h5)) return;
-  const auto infos = list_snapshots(h5);
-  bool any_later = false;
-  for (const auto& info : infos) any_later = any_later || info.step > step;
-  if (!any_later) return;
-  std::vector<Snapshot> keep;
-  for (const auto& info : infos)
-    if (info.step <= step) keep.push_back(read_snapshot(h5, info.name));
-  const fs::path fresh = h5.parent_path() / (".resume-" + h5.filename().string());
-  fs::remove(fresh);
-  for (const Snapshot& s : keep) append_snapshot(fresh, s);
-  if (keep.empty()) {
-    fs::remove(h5);
-  } else {
-    fs::rename(fresh, h5);
-  }
-  write_snapshot_xdmf(h5);
-}
+void drop_snapshots_after(const fs::path& h5, std::int64_t step) { truncate_snapshots(h5, step); }
 
 // The run's description at the top of run.log.
 void describe_run(RunRecorder& recorder, const ExperimentConfig& c, const fs::path& out) {

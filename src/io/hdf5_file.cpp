@@ -227,6 +227,32 @@ std::vector<std::string> Hdf5Group::children() const {
   return names;
 }
 
+void Hdf5Group::remove(std::string_view name) const {
+  const std::string key(name);
+  if (H5Ldelete(id(), key.c_str(), H5P_DEFAULT) < 0) fail(describe(name), "cannot remove the link");
+}
+
+void Hdf5Group::create_external_link(std::string_view name, std::string_view file, std::string_view object) const {
+  const std::string key(name), target_file(file), target_object(object);
+  if (H5Lcreate_external(target_file.c_str(), target_object.c_str(), id(), key.c_str(), H5P_DEFAULT, H5P_DEFAULT) < 0)
+    fail(describe(name), fmt::format("cannot create the link to {}:{}", target_file, target_object));
+}
+
+std::optional<Hdf5Group::ExternalTarget> Hdf5Group::external_link(std::string_view name) const {
+  const std::string key(name);
+  H5L_info_t info;
+  if (H5Lget_info(id(), key.c_str(), &info, H5P_DEFAULT) < 0) fail(describe(name), "no such link");
+  if (info.type != H5L_TYPE_EXTERNAL) return std::nullopt;
+  std::vector<char> value(info.u.val_size);
+  const char* file = nullptr;
+  const char* object = nullptr;
+  unsigned flags = 0;
+  if (H5Lget_val(id(), key.c_str(), value.data(), value.size(), H5P_DEFAULT) < 0 ||
+      H5Lunpack_elink_val(value.data(), value.size(), &flags, &file, &object) < 0)
+    fail(describe(name), "cannot read the external link");
+  return ExternalTarget{file, object};
+}
+
 void Hdf5Group::write_doubles(std::string_view name, std::span<const double> data, std::string_view units) const {
   write_dataset(*this, name, H5T_IEEE_F64LE, H5T_NATIVE_DOUBLE, data.data(), data.size(), 0, units);
 }

@@ -7,6 +7,7 @@
 
 #include <cstdint>
 #include <filesystem>
+#include <optional>
 #include <span>
 #include <string>
 #include <string_view>
@@ -50,6 +51,15 @@ class Hdf5Group {
   Hdf5Group create_group(std::string_view name) const;
   Hdf5Group group(std::string_view name) const;        // FileError if absent
   std::vector<std::string> children() const;           // child names in name order
+  void remove(std::string_view name) const;             // unlinks a child (its space is not reclaimed)
+  // A link to `object` in another HDF5 file; a relative `file` is looked up from the folder of the
+  // file holding the link (HDF5 tries that before the working directory).
+  void create_external_link(std::string_view name, std::string_view file, std::string_view object) const;
+  struct ExternalTarget {
+    std::string file;    // as stored (relative to this file's folder, normally)
+    std::string object;  // path inside it
+  };
+  std::optional<ExternalTarget> external_link(std::string_view name) const;  // empty: not an external link
 
   // Datasets: 1-D of length N, or N x 3 for vectors. `units` (optional) is stored as the
   // dataset's string attribute "units".

@@ -13,8 +13,22 @@ namespace fs = std::filesystem;
 namespace {
 
 constexpr const char* kFormat = "trapdem-snapshots";
-constexpr std::int64_t kVersion = 1;
+constexpr std::int64_t kVersion = 2;  // 2: each snapshot in its own file, linked from the index
 constexpr const char* kRoot = "snapshots";
+// 0, 1, 2, ... (int32): the vertex list of the XDMF's Polyvertex topology. ParaView's XDMF 3 reader
+// makes no cells from a Polyvertex topology without one (points, 0 cells: its default Surface view
+// is then empty), so each grid takes the first N entries of this array (an XDMF hyperslab).
+constexpr const char* kVertexIndex = "vertex_index";
+
+// Makes the file's vertex index at least n long (it only grows: the first n entries of a longer
+// one are the same).
+void ensure_vertex_index(const Hdf5Group& root, std::size_t n) {
+  if (root.has(kVertexIndex) && root.dataset_length(kVertexIndex) >= n) return;
+  if (root.has(kVertexIndex)) root.remove(kVertexIndex);
+  std::vector<std::uint32_t> index(n);
+  for (std::size_t i = 0; i < n; ++i) index[i] = static_cast<std::uint32_t>(i);
+  root.write_uint32s(kVertexIndex, index);
+}
 
 std::string group_name(std::size_t index) { return fmt::format("{:06d}", index); }
 
@@ -33,12 +47,50 @@ SnapshotInfo info_of(const Hdf5Group& g, const std::string& name) {
   return info;
 }
 
+// Where a snapshot's datasets are, for the XDMF: "snapshots/000003.h5:/" (its own file, the index
+// holding an external link) or "snapshots.h5:/snapshots/000003/" (a group inside the index: files
+// written by other tools, or by trapdem before version 2).
+std::string data_location(const Hdf5Group& root, const std::string& index_file_name, const std::string& name) {
+  if (const auto target = root.external_link(name)) {
+    std::string object = target->object;
+    if (object.empty() || object.back() != '/') object += '/';
+    return target->file + ":" + object;
+  }
+  return fmt::format("{}:/{}/{}/", index_file_name, kRoot, name);
+}
+
 std::vector<SnapshotInfo> list_in(const Hdf5File& file) {
   std::vector<SnapshotInfo> out;
   if (!file.has(kRoot)) return out;
   const Hdf5Group root = file.group(kRoot);
-  for (const std::string& name : root.children()) out.push_back(info_of(root.group(name), name));
+  const std::string index_name = fs::path(file.file_name()).filename().string();
+  for (const std::string& name : root.children()) {
+    out.push_back(info_of(root.group(name), name));
+    out.back().location = data_location(root, index_name, name);
+  }
   return out;
+}
+
+// snapshots.h5 -> snapshots/ beside it: the snapshots' own files.
+fs::path data_folder_of(const fs::path& h5_path) {
+  fs::path folder = h5_path;
+  folder.replace_extension();
+  return folder;
+}
+
+// The datasets and attributes of one snapshot, in `g` (the root of the snapshot's own file).
+void write_snapshot_data(const Hdf5Group& g, const Snapshot& s) {
+  g.set_double_attribute("time", s.time);
+  g.set_string_attribute("stage", s.stage);
+  g.set_double_attribute("trapdoor_displacement", s.trapdoor_displacement);
+  g.set_int_attribute("step", s.step);
+  g.write_int64s("id", s.id);
+  g.write_vec3s("position", s.position, "m");
+  g.write_vec3s("velocity", s.velocity, "m/s");
+  g.write_vec3s("angular_velocity", s.angular_velocity, "rad/s");
+  g.write_doubles("radius", s.radius, "m");
+  if (s.image.empty()) g.write_int3s("image", std::vector<Int3>(s.size()));
+  else g.write_int3s("image", s.image);
 }
 
 fs::path xdmf_path_of(const fs::path& h5_path) {
@@ -70,33 +122,67 @@ std::string append_snapshot(const fs::path& h5_path, const Snapshot& s) {
   if (s.position.size() != n || s.velocity.size() != n || s.angular_velocity.size() != n || s.radius.size() != n ||
       (!s.image.empty() && s.image.size() != n))
     throw FileError(fmt::format("{}: snapshot arrays differ in length ({} ids)", h5_path.string(), n));
-  std::string name;
+  std::error_code ec;
+  const bool fresh = !fs::exists(h5_path, ec);
+  const std::string name = group_name(fresh ? 0 : list_snapshots(h5_path).size());
+
+  // 1. The snapshot's own file. A file of that name left by an append that was killed before step
+  // 2 is not in the index: it is replaced.
+  const fs::path folder = data_folder_of(h5_path);
+  fs::create_directories(folder, ec);
+  if (ec) throw FileError(fmt::format("cannot create the snapshot folder {}: {}", folder.string(), ec.message()));
+  const fs::path data_file = folder / (name + ".h5");
+  write_atomically(data_file, [&](const fs::path& temporary) {
+    Hdf5File file = Hdf5File::create_in_memory(data_file);
+    write_snapshot_data(file, s);
+    file.write_image(temporary);
+  });
+
+  // 2. The index: one more link. Small (links and the vertex index), so rewriting it whole is cheap.
   write_atomically(h5_path, [&](const fs::path& temporary) {
-    std::error_code ec;
-    const bool fresh = !fs::exists(h5_path, ec);
     Hdf5File file = fresh ? Hdf5File::create_in_memory(h5_path) : Hdf5File::open_in_memory(h5_path);
     if (fresh) {
       file.set_string_attribute("format", kFormat);
       file.set_int_attribute("version", kVersion);
     }
     const Hdf5Group root = file.has(kRoot) ? file.group(kRoot) : file.create_group(kRoot);
-    name = group_name(root.children().size());
-    const Hdf5Group g = root.create_group(name);
-    g.set_double_attribute("time", s.time);
-    g.set_string_attribute("stage", s.stage);
-    g.set_double_attribute("trapdoor_displacement", s.trapdoor_displacement);
-    g.set_int_attribute("step", s.step);
-    g.write_int64s("id", s.id);
-    g.write_vec3s("position", s.position, "m");
-    g.write_vec3s("velocity", s.velocity, "m/s");
-    g.write_vec3s("angular_velocity", s.angular_velocity, "rad/s");
-    g.write_doubles("radius", s.radius, "m");
-    if (s.image.empty()) g.write_int3s("image", std::vector<Int3>(n));
-    else g.write_int3s("image", s.image);
+    root.create_external_link(name, (folder.filename() / (name + ".h5")).string(), "/");
+    ensure_vertex_index(file, n);
     file.write_image(temporary);
   });
+
+  // 3. The XDMF companion.
   write_snapshot_xdmf(h5_path);
   return name;
+}
+
+void truncate_snapshots(const fs::path& h5_path, std::int64_t last_step) {
+  std::error_code ec;
+  if (!fs::exists(h5_path, ec)) return;
+  std::vector<std::string> dropped;
+  std::size_t kept = 0;
+  for (const SnapshotInfo& info : list_snapshots(h5_path)) {
+    if (info.step > last_step) dropped.push_back(info.name);
+    else ++kept;
+  }
+  if (dropped.empty()) return;
+  std::vector<fs::path> orphans;  // the dropped snapshots' own files, removed once the index no longer names them
+  write_atomically(h5_path, [&](const fs::path& temporary) {
+    Hdf5File file = Hdf5File::open_in_memory(h5_path);
+    const Hdf5Group root = file.group(kRoot);
+    for (const std::string& name : dropped) {
+      if (const auto target = root.external_link(name)) orphans.push_back(h5_path.parent_path() / target->file);
+      root.remove(name);
+    }
+    file.write_image(temporary);
+  });
+  if (kept == 0) {
+    fs::remove(h5_path, ec);
+    fs::remove(xdmf_path_of(h5_path), ec);
+  } else {
+    write_snapshot_xdmf(h5_path);
+  }
+  for (const fs::path& orphan : orphans) fs::remove(orphan, ec);
 }
 
 std::vector<SnapshotInfo> list_snapshots(const fs::path& h5_path) { return list_in(Hdf5File::open_read(h5_path)); }
@@ -131,21 +217,23 @@ std::vector<Snapshot> read_snapshots(const fs::path& h5_path) {
   return out;
 }
 
-std::string snapshot_xdmf(const std::string& h5_file_name, const std::vector<SnapshotInfo>& snapshots) {
+std::string snapshot_xdmf(const std::string& h5_file_name, const std::vector<SnapshotInfo>& snapshots,
+                          std::size_t vertex_index_length) {
   const std::string file = markup_escape(h5_file_name);
   std::string x;
   x += "<?xml version=\"1.0\" ?>\n";
-  x += "<!-- trapdem particle snapshots; the data live in " + file + " (see docs/output.md) -->\n";
+  x += "<!-- trapdem particle snapshots: the index " + file + " and the files it links (see docs/output.md) -->\n";
   x += "<Xdmf Version=\"3.0\">\n  <Domain>\n";
   x += "    <Grid Name=\"particles\" GridType=\"Collection\" CollectionType=\"Temporal\">\n";
   for (const SnapshotInfo& s : snapshots) {
     if (s.particle_count == 0) continue;
     const std::size_t n = s.particle_count;
-    const std::string base = fmt::format("{}:/{}/{}", file, kRoot, s.name);
+    const std::string base =
+        markup_escape(s.location.empty() ? fmt::format("{}:/{}/{}/", h5_file_name, kRoot, s.name) : s.location);
     auto item = [&](const char* dataset, int columns, const char* type) {
       const std::string dims = columns > 1 ? fmt::format("{} {}", n, columns) : fmt::format("{}", n);
       return fmt::format(
-          "          <DataItem Dimensions=\"{}\" NumberType=\"{}\" Precision=\"8\" Format=\"HDF\">{}/{}</DataItem>\n",
+          "          <DataItem Dimensions=\"{}\" NumberType=\"{}\" Precision=\"8\" Format=\"HDF\">{}{}</DataItem>\n",
           dims, type, base, dataset);
     };
     auto attribute = [&](const char* name, const char* kind, int columns, const char* type) {
@@ -157,7 +245,16 @@ std::string snapshot_xdmf(const std::string& h5_file_name, const std::vector<Sna
     x += fmt::format("        <Information Name=\"stage\" Value=\"{}\"/>\n", markup_escape(s.stage));
     x += fmt::format("        <Information Name=\"trapdoor_displacement\" Value=\"{}\"/>\n", s.trapdoor_displacement);
     x += fmt::format("        <Information Name=\"step\" Value=\"{}\"/>\n", s.step);
-    x += fmt::format("        <Topology TopologyType=\"Polyvertex\" NumberOfElements=\"{}\" NodesPerElement=\"1\"/>\n", n);
+    x += fmt::format("        <Topology TopologyType=\"Polyvertex\" NumberOfElements=\"{}\" NodesPerElement=\"1\">\n", n);
+    if (vertex_index_length >= n) {
+      // Vertex i is particle row i: the first n entries of the vertex index (start 0, stride 1, count n).
+      x += fmt::format("          <DataItem ItemType=\"HyperSlab\" Dimensions=\"{}\" Type=\"HyperSlab\">\n", n);
+      x += fmt::format("            <DataItem Dimensions=\"3 1\" Format=\"XML\">0 1 {}</DataItem>\n", n);
+      x += fmt::format("            <DataItem Dimensions=\"{}\" NumberType=\"UInt\" Precision=\"4\" Format=\"HDF\">{}:/{}</DataItem>\n",
+                       vertex_index_length, file, kVertexIndex);
+      x += "          </DataItem>\n";
+    }
+    x += "        </Topology>\n";
     x += "        <Geometry GeometryType=\"XYZ\">\n" + item("position", 3, "Float") + "        </Geometry>\n";
     x += attribute("radius", "Scalar", 1, "Float");
     x += attribute("id", "Scalar", 1, "Int");
@@ -170,8 +267,10 @@ std::string snapshot_xdmf(const std::string& h5_file_name, const std::vector<Sna
 }
 
 void write_snapshot_xdmf(const fs::path& h5_path) {
-  const std::vector<SnapshotInfo> snapshots = list_snapshots(h5_path);
-  write_text_atomically(xdmf_path_of(h5_path), snapshot_xdmf(h5_path.filename().string(), snapshots));
+  const Hdf5File file = Hdf5File::open_read(h5_path);
+  const std::vector<SnapshotInfo> snapshots = list_in(file);
+  const std::size_t vertex_index_length = file.has(kVertexIndex) ? file.dataset_length(kVertexIndex) : 0;
+  write_text_atomically(xdmf_path_of(h5_path), snapshot_xdmf(h5_path.filename().string(), snapshots, vertex_index_length));
 }
 
 }  // namespace trapdem

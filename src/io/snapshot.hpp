@@ -3,11 +3,13 @@
 // (/snapshots/000000, /snapshots/000001, ...) and snapshots.xmf, its XDMF 3 companion, lets
 // ParaView open the file as a time series of particles. Layout: docs/output.md.
 //
-// Never a broken file: each append loads snapshots.h5 into memory, adds the new group there,
-// writes the whole file to a temporary sibling, syncs it and renames it over the old file
-// (io/atomic_file.hpp); the XDMF file is then rewritten the same way. A crash or a full disk at
-// any point leaves the previous complete snapshots.h5. The price: an append costs a copy of the
-// file (in memory, about twice its size, and on disk), fine for the tens of snapshots of a run.
+// Appending never rewrites what is already written, and never leaves a broken file: each
+// snapshot is a file of its own, snapshots/000003.h5 beside snapshots.h5, written to a temporary
+// sibling, synced and renamed into place (io/atomic_file.hpp); snapshots.h5 is then a small index,
+// rewritten the same way, whose /snapshots/000003 is an HDF5 external link to that file's root
+// (h5py and the HDF5 library follow it like a group). A kill or a full disk at any point leaves
+// the previous index, naming only complete files. Readers also accept files whose snapshots are
+// plain groups inside snapshots.h5 (other tools; trapdem before format version 2).
 #include <cstdint>
 #include <filesystem>
 #include <string>
@@ -45,12 +47,21 @@ struct SnapshotInfo {
   double trapdoor_displacement = 0.0;   // m
   std::int64_t step = 0;
   std::size_t particle_count = 0;
+  // Where its datasets are, as the XDMF names them: "snapshots/000003.h5:/" (its own file) or
+  // "snapshots.h5:/snapshots/000003/" (a group inside the index, as other tools write it).
+  std::string location;
 };
 
-// Appends a snapshot to `h5_path` (creating the file if absent) and rewrites the XDMF companion
+// Appends a snapshot to `h5_path` (creating the index if absent): writes its own file in the folder
+// named as `h5_path` without extension, links it from the index and rewrites the XDMF companion
 // (same name with the .xmf extension). Returns the new snapshot's group name. Throws FileError
 // naming the path; the previous files stay as they were.
 std::string append_snapshot(const std::filesystem::path& h5_path, const Snapshot& snapshot);
+
+// Drops the snapshots taken after engine step `last_step` (a resumed run writes them again): the
+// index and the XDMF are rewritten without them, then their files are removed. No snapshot left:
+// the index and the XDMF are removed. Nothing to drop (or no index): nothing changes.
+void truncate_snapshots(const std::filesystem::path& h5_path, std::int64_t last_step);
 
 // Reading (for the analysis; accepts files written by other tools that follow docs/output.md:
 // id, position and radius are required, velocity, angular_velocity and image default to zero,
@@ -60,10 +71,13 @@ Snapshot read_snapshot(const std::filesystem::path& h5_path, const std::string& 
 std::vector<Snapshot> read_snapshots(const std::filesystem::path& h5_path);
 
 // The XDMF 3 text for `snapshots` stored in the HDF5 file named `h5_file_name` (relative to the
-// .xmf file's folder): a temporal collection of Polyvertex grids with attributes radius, id,
-// velocity and angular_velocity. Snapshots without particles are left out (ParaView rejects
+// .xmf file's folder): a temporal collection of Polyvertex grids, one vertex cell per particle,
+// with attributes radius, id, velocity and angular_velocity. The cells' vertex list is the file's
+// /vertex_index (0, 1, 2, ...; `vertex_index_length` long); a snapshot with more particles than
+// that gets points without cells. Snapshots without particles are left out (ParaView rejects
 // empty grids).
-std::string snapshot_xdmf(const std::string& h5_file_name, const std::vector<SnapshotInfo>& snapshots);
+std::string snapshot_xdmf(const std::string& h5_file_name, const std::vector<SnapshotInfo>& snapshots,
+                          std::size_t vertex_index_length);
 // Writes snapshot_xdmf(...) for the file at h5_path to h5_path with the .xmf extension, atomically.
 void write_snapshot_xdmf(const std::filesystem::path& h5_path);
 
