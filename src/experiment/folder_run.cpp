@@ -8,6 +8,7 @@
 #include <fmt/format.h>
 
 #include "core/errors.hpp"
+#include "core/thread_count.hpp"
 #include "experiment/run_folder.hpp"
 #include "experiment/run_record.hpp"
 #include "experiment/run_recorder.hpp"
@@ -69,6 +70,7 @@ void describe_run(RunRecorder& recorder, const ExperimentConfig& c, const fs::pa
 }  // namespace
 
 bool run_in_folder(const FolderRunOptions& o) {
+  checked_thread_count(o.threads, "--threads");
   const bool resume = !o.resume_dir.empty();
   fs::path out;
   Config config = [&] {

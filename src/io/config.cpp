@@ -285,6 +285,9 @@ double number_of(const Config::State& s, const std::string& key, const toml::nod
   if (auto f = node.as_floating_point()) x = f->get();
   else if (auto i = node.as_integer()) x = static_cast<double>(i->get());
   else wrong(s, key, node, expectation("a number", unit, range));
+  // TOML has inf and nan; no key of ours means either (an unbounded range included): refused here,
+  // once for every float key, rather than by each key's range.
+  if (!std::isfinite(x)) wrong(s, key, node, expectation("a finite number", unit, range));
   if (!range.contains(x)) wrong(s, key, node, expectation("a number", unit, range));
   return x;
 }
