@@ -144,6 +144,134 @@ void insert_at(toml::table& root, std::string_view key, toml::node&& value) {
   std::move(value).visit([&](auto&& v) { table->insert_or_assign(parts.back(), std::move(v)); });
 }
 
+// Tables nested deeper than this are refused before toml++ sees the text: it builds (and frees)
+// nested tables recursively, and 50 000 levels of `[a.a.a...]` overflowed its stack (issue 14).
+// The deepest key of a real configuration is 3 levels (walls.front.static_friction); a study's
+// per-case settings add 3.
+constexpr int kMaxNesting = 64;
+
+// Skips a string starting at text[i] (a quote), basic or literal, single- or multi-line; returns the
+// index just past its end (or text.size()), counting the newlines it passes.
+std::size_t skip_string(std::string_view text, std::size_t i, int& line) {
+  const char quote = text[i];
+  const bool multi = text.substr(i, 3) == std::string(3, quote);
+  std::size_t j = i + (multi ? 3 : 1);
+  while (j < text.size()) {
+    const char c = text[j];
+    if (c == '\\' && quote == '"') {
+      j += 2;
+      continue;
+    }
+    if (c == '\n') {
+      ++line;
+      if (!multi) return j;  // unterminated: toml++ reports it
+    }
+    if (c == quote && (!multi || text.substr(j, 3) == std::string(3, quote))) return j + (multi ? 3 : 1);
+    ++j;
+  }
+  return j;
+}
+
+// A fast scan of the text for how deep its tables and values nest: a [header] counts its dotted
+// parts, a key its dotted parts below the header and the values that hold it, an array or inline
+// table one level more than what holds it. Strings and comments are skipped. Throws InputError
+// "<file>:<line>: ... nested N deep" at the first place deeper than kMaxNesting.
+void check_nesting(std::string_view text, const std::string& source) {
+  std::vector<int> open;     // per open [ or {: the levels it adds (its key's parts + 1)
+  std::vector<char> kind;    // '[' or '{'
+  int nested = 0;            // sum of `open`
+  int header = 0;            // parts of the current [header]
+  int line = 1;
+  bool key_mode = true;      // reading a key (line start, after '{' or ',' in an inline table)
+  int dots = 0;              // dots in the key read so far
+  int pending = 0;           // parts of the key whose value comes next
+  bool line_start = true;
+  auto fail = [&](int depth) {
+    throw InputError(fmt::format("{}:{}: tables and arrays nested {} levels deep: expected at most {} (a generated "
+                                 "or damaged file?)", source, line, depth, kMaxNesting));
+  };
+  for (std::size_t i = 0; i < text.size();) {
+    const char c = text[i];
+    if (c == '\n') {
+      ++line;
+      if (open.empty()) {
+        key_mode = true;
+        dots = 0;
+        line_start = true;
+      }
+      ++i;
+      continue;
+    }
+    if (c == ' ' || c == '\t' || c == '\r') {
+      ++i;
+      continue;
+    }
+    if (c == '#') {
+      while (i < text.size() && text[i] != '\n') ++i;
+      continue;
+    }
+    if (c == '"' || c == '\'') {
+      i = skip_string(text, i, line);
+      line_start = false;
+      continue;
+    }
+    if (line_start && open.empty() && c == '[') {  // a [header] or [[header]]: its dotted parts
+      int parts = 1;
+      while (i < text.size() && text[i] != '\n' && text[i] != ']') {
+        if (text[i] == '"' || text[i] == '\'') {
+          i = skip_string(text, i, line);
+          continue;
+        }
+        if (text[i] == '.') ++parts;
+        ++i;
+      }
+      header = parts;
+      if (header > kMaxNesting) fail(header);
+      while (i < text.size() && text[i] != '\n' && text[i] != '#') ++i;
+      line_start = false;
+      continue;
+    }
+    line_start = false;
+    if (key_mode) {
+      if (c == '.') ++dots;
+      if (c == '=') {
+        pending = dots + 1;
+        if (header + nested + pending > kMaxNesting) fail(header + nested + pending);
+        key_mode = false;
+        dots = 0;
+      } else if (c == '}' && !kind.empty() && kind.back() == '{') {  // an empty inline table
+        nested -= open.back();
+        open.pop_back();
+        kind.pop_back();
+        key_mode = false;
+      }
+      ++i;
+      continue;
+    }
+    if (c == '[' || c == '{') {
+      const int levels = std::max(pending, 0) + 1;
+      pending = 0;
+      open.push_back(levels);
+      kind.push_back(c);
+      nested += levels;
+      if (header + nested > kMaxNesting) fail(header + nested);
+      key_mode = c == '{';
+      dots = 0;
+    } else if ((c == ']' || c == '}') && !open.empty()) {
+      nested -= open.back();
+      open.pop_back();
+      kind.pop_back();
+    } else if (c == ',' && !kind.empty()) {
+      key_mode = kind.back() == '{';
+      dots = 0;
+      pending = 0;
+    } else {
+      pending = 0;
+    }
+    ++i;
+  }
+}
+
 }  // namespace
 
 // ---------------------------------------------------------------------------------------------
@@ -175,6 +303,7 @@ Config Config::load_file(const std::string& path) {
 Config Config::parse(std::string_view text, std::string source_name) {
   auto state = std::make_shared<State>();
   state->source = std::move(source_name);
+  check_nesting(text, state->source);
   try {
     state->document = toml::parse(text, state->source);
   } catch (const toml::parse_error& e) {
@@ -200,11 +329,17 @@ void Config::apply_override(std::string_view assignment) {
     if (!is_bare_key(part))
       throw InputError(fmt::format("{}: '{}' is not a key path (letters, digits, _ and - separated by dots)", origin, key));
 
+  if (parts.size() > std::size_t(kMaxNesting))
+    throw InputError(fmt::format("{}: a key {} levels deep: expected at most {}", origin, parts.size(), kMaxNesting));
+  const std::string value_text = "value = " + text;
   toml::table holder;
   try {
-    holder = toml::parse(std::string_view("value = " + text), std::string_view("--set"));
+    check_nesting(value_text, origin);
+    holder = toml::parse(std::string_view(value_text), std::string_view("--set"));
   } catch (const toml::parse_error&) {
     holder.insert_or_assign("value", text);  // not TOML: a bare word is meant as a string
+  } catch (const InputError&) {
+    holder.insert_or_assign("value", text);  // nested too deep to be a value of ours: a string, refused by its key
   }
   if (!holder.get("value") || holder.size() != 1) {  // "1\nx = 2" and the like
     holder = toml::table{};
@@ -540,13 +675,28 @@ struct Unknown {
   const toml::node* node;
 };
 
-void collect_unused(const Config::State& s, const toml::table& table, const std::string& prefix,
-                    std::vector<Unknown>& out) {
-  for (const auto& [name, node] : table) {
-    const std::string key = prefix + std::string(name.str());
+// Depth first in the document's (name) order, with an explicit stack: the depth of user data does
+// not reach the call stack (check_nesting bounds it too).
+void collect_unused(const Config::State& s, const toml::table& root, std::vector<Unknown>& out) {
+  struct Level {
+    const toml::table* table;
+    toml::table::const_iterator next;
+    std::string prefix;
+  };
+  std::vector<Level> stack;
+  stack.push_back({&root, root.begin(), ""});
+  while (!stack.empty()) {
+    Level& level = stack.back();
+    if (level.next == level.table->end()) {
+      stack.pop_back();
+      continue;
+    }
+    const auto entry = level.next++;  // toml++'s iterator holds the pair it dereferences to: keep it
+    const auto& [name, node] = *entry;
+    const std::string key = level.prefix + std::string(name.str());
     if (key == kDerivedTable) continue;  // output of an earlier run (resolved.toml read again)
     if (const toml::table* sub = node.as_table(); sub && !sub->empty()) {
-      collect_unused(s, *sub, key + ".", out);
+      stack.push_back({sub, sub->begin(), key + "."});  // invalidates `level`
     } else if (!s.used.count(key)) {
       out.push_back({key, &node});
     }
@@ -577,7 +727,7 @@ std::string suggestion(const Config::State& s, const std::string& unknown) {
 
 std::vector<std::string> Config::unused_keys() const {
   std::vector<Unknown> unknown;
-  collect_unused(*state_, state_->document, "", unknown);
+  collect_unused(*state_, state_->document, unknown);
   std::vector<std::string> out;
   for (const Unknown& u : unknown) out.push_back(u.key);
   return out;
@@ -585,7 +735,7 @@ std::vector<std::string> Config::unused_keys() const {
 
 void Config::report_unused() const {
   std::vector<Unknown> unknown;
-  collect_unused(*state_, state_->document, "", unknown);
+  collect_unused(*state_, state_->document, unknown);
   if (unknown.empty()) return;
   std::string message = fmt::format("{}: {} unknown key{} (misspelt, or not used by this program):", state_->source,
                                     unknown.size(), unknown.size() == 1 ? "" : "s");
