@@ -49,7 +49,7 @@ ContactLaw read_contact_law(Config table, const ContactLaw& base) {
   if (hertz) {
     for (const char* key : {"normal_stiffness", "tangential_stiffness"})
       if (table.has(key))
-        throw table.error(key, "no stiffness with normal_model = \"hertz\" (its stiffness follows from youngs_modulus "
+        table.fail(key, "no stiffness with normal_model = \"hertz\" (its stiffness follows from youngs_modulus "
                                "and poisson_ratio); remove the key or set normal_model = \"linear\"");
     law.normal_stiffness = base.normal_stiffness;
     law.tangential_stiffness = base.tangential_stiffness;
@@ -84,15 +84,17 @@ SizeDistribution read_sizes(Config& p) {
   if (kind == "uniform") {
     const double lo = p.require_double("min_diameter", "m", Range::open_closed(0.0, kMaxDiameter));
     const double hi = p.require_double("max_diameter", "m", Range::open_closed(0.0, kMaxDiameter));
-    if (hi < lo) throw p.error("max_diameter", fmt::format("a size >= min_diameter ({} m)", lo));
-    return SizeDistribution::uniform(lo, hi);
+    if (!(lo > 0.0) || !(hi > 0.0)) return SizeDistribution::single(0.002);  // refused and recorded: read on
+    if (hi < lo) p.fail("max_diameter", fmt::format("a size >= min_diameter ({} m)", lo));
+    return SizeDistribution::uniform(lo, std::max(lo, hi));
   }
   std::vector<std::pair<double, double>> table;
   for (const auto& row : p.require_rows("grading", 2, "diameter in m, percent passing")) table.emplace_back(row[0], row[1]);
   try {
     return SizeDistribution::grading(std::move(table), "grading");
   } catch (const InputError& e) {
-    throw p.error("grading", e.what());  // names the file and line of the table
+    p.fail("grading", e.what());  // names the file and line of the table
+    return SizeDistribution::single(0.002);  // reading goes on to find the other errors
   }
 }
 
@@ -110,22 +112,22 @@ void read_specimen(Config& c, ExperimentConfig& e) {
   Config door = c.get_table("trapdoor");
   e.trapdoor.width = door.get_double("width", e.trapdoor.width, "m", Range::open_closed(0.0, kMaxLength));
   if (e.trapdoor.width >= e.box.width)
-    throw door.error("width", fmt::format("a trapdoor narrower than the box (box.width = {} m)", e.box.width));
+    door.fail("width", fmt::format("a trapdoor narrower than the box (box.width = {} m)", e.box.width));
   e.trapdoor.centre = door.get_double("centre", 0.5 * e.box.width, "m", Range::open_closed(0.0, kMaxLength));
   if (e.trapdoor.centre - 0.5 * e.trapdoor.width <= 0.0 || e.trapdoor.centre + 0.5 * e.trapdoor.width >= e.box.width)
-    throw door.error("centre", fmt::format("a position that keeps the trapdoor inside the box (0 .. {} m) with "
+    door.fail("centre", fmt::format("a position that keeps the trapdoor inside the box (0 .. {} m) with "
                                            "fixed base on both sides", e.box.width));
   e.trapdoor.travel = door.get_double("travel", e.trapdoor.travel, "m", Range::open_closed(0.0, kMaxLength));
   e.trapdoor.rate = door.get_double("rate", e.trapdoor.rate, "m/s", Range::open_closed(0.0, kMaxRate));
   e.trapdoor.cavity_depth = door.get_double("cavity_depth", e.trapdoor.travel + 0.01, "m", Range::open_closed(0.0, kMaxLength));
   if (e.trapdoor.cavity_depth < e.trapdoor.travel)
-    throw door.error("cavity_depth", fmt::format("at least the travel ({} m)", e.trapdoor.travel));
+    door.fail("cavity_depth", fmt::format("at least the travel ({} m)", e.trapdoor.travel));
 }
 
 // pluviation.fill_height: the pour's end, and the soil height the sinkhole estimate falls back on.
 double read_fill_height(Config& pour, const BoxConfig& box) {
   const double fill_height = pour.get_double("fill_height", 0.0, "m", Range::non_negative());
-  if (fill_height > box.height) throw pour.error("fill_height", fmt::format("at most the box height ({} m)", box.height));
+  if (fill_height > box.height) pour.fail("fill_height", fmt::format("at most the box height ({} m)", box.height));
   return fill_height;
 }
 
@@ -162,12 +164,12 @@ std::string stiffest_key(const ExperimentConfig& e) {
 void check_time_step(Config& c, const ExperimentConfig& e) {
   const double critical = e.critical_time_step();
   if (!std::isfinite(critical) || !(critical > 0.0))
-    throw c.error(stiffest_key(e), fmt::format("a value that gives a finite critical time step ({} = {} s with the "
+    return c.fail(stiffest_key(e), fmt::format("a value that gives a finite critical time step ({} = {} s with the "
                                                "density and smallest diameter given)",
                                                critical_time_step_formula(e.material.particle, e.material.wall_laws()),
                                                critical));
   if (!(e.time_step() >= 1e-15))
-    throw c.error(e.numerics.time_step > 0.0 ? "numerics.time_step"
+    return c.fail(e.numerics.time_step > 0.0 ? "numerics.time_step"
                   : critical >= 1e-15       ? "numerics.time_step_fraction"
                                             : stiffest_key(e),
                   fmt::format("a time step of at least 1e-15 s (it is {:.4g} s)", e.time_step()));
@@ -184,7 +186,7 @@ void check_step_counts(Config& c, const ExperimentConfig& e) {
   };
   for (const auto& [key, seconds] : stages) {
     if (seconds / dt > kMaxSteps)
-      throw c.error(key, fmt::format("a stage of at most {:g} time steps: {:.4g} s of simulated time at dt = {:.4g} s "
+      return c.fail(key, fmt::format("a stage of at most {:g} time steps: {:.4g} s of simulated time at dt = {:.4g} s "
                                      "is {:.3g} steps", kMaxSteps, seconds, dt, seconds / dt));
   }
   if (e.pluviation.count == 0) {
@@ -192,7 +194,7 @@ void check_step_counts(Config& c, const ExperimentConfig& e) {
     const double expected = e.pluviation.packing_fraction * e.box.width * e.box.depth * e.pluviation.fill_height /
                             (std::numbers::pi / 6.0 * d * d * d);
     if (!(expected <= double(kMaxParticles)))
-      throw c.error("pluviation.fill_height", fmt::format("a fill height that needs at most {} particles (memory: about "
+      c.fail("pluviation.fill_height", fmt::format("a fill height that needs at most {} particles (memory: about "
                                                           "0.5 kB each); it needs {:.3g}", kMaxParticles, expected));
   }
 }
@@ -200,6 +202,7 @@ void check_step_counts(Config& c, const ExperimentConfig& e) {
 }  // namespace
 
 ExperimentConfig ExperimentConfig::from(Config& c) {
+  c.collect_errors();
   ExperimentConfig e;
   read_specimen(c, e);
 
@@ -208,7 +211,7 @@ ExperimentConfig ExperimentConfig::from(Config& c) {
   e.material.sizes = read_sizes(particles);
   if (e.material.sizes.max_diameter() * 3.0 > e.box.depth && !e.box.periodic_depth) {
     const char* size_key = particles.has("grading") ? "grading" : (particles.has("max_diameter") ? "max_diameter" : "diameter");
-    throw particles.error(size_key, fmt::format("particles at most a third of the box depth ({} m)", e.box.depth));
+    particles.fail(size_key, fmt::format("particles at most a third of the box depth ({} m)", e.box.depth));
   }
 
   Config contact = c.get_table("contact");
@@ -220,14 +223,14 @@ ExperimentConfig ExperimentConfig::from(Config& c) {
   for (const ContactLaw* law : e.material.wall_laws()) {
     // A Hertz wall contact combines the wall's material with the particles'.
     if (law->normal_model == NormalModel::hertz && !(e.material.particle.youngs_modulus > 0.0))
-      throw contact.error("youngs_modulus", "the particles' Young's modulus in Pa: a wall has normal_model = \"hertz\"");
+      contact.fail("youngs_modulus", "the particles' Young's modulus in Pa: a wall has normal_model = \"hertz\"");
   }
 
   Config pour = c.get_table("pluviation");
   e.pluviation.count = pour.get_int("count", 0, Range::closed(0.0, double(kMaxParticles)));
   e.pluviation.fill_height = read_fill_height(pour, e.box);
   if (e.pluviation.count == 0 && e.pluviation.fill_height == 0.0)
-    throw pour.error("count", "a particle count or a fill_height (m) to end the pour");
+    pour.fail("count", "a particle count or a fill_height (m) to end the pour");
   e.pluviation.drop_height = pour.get_double("drop_height", e.pluviation.drop_height, "m", Range::closed(0.0, kMaxDropHeight));
   e.pluviation.flow_rate = pour.get_double("flow_rate", 0.0, "kg/s", Range::closed(0.0, kMaxFlowRate));
   e.pluviation.packing_fraction =
@@ -239,7 +242,7 @@ ExperimentConfig ExperimentConfig::from(Config& c) {
     const double height = double(e.pluviation.count) * std::numbers::pi / 6.0 * d * d * d /
                           (e.pluviation.packing_fraction * e.box.width * e.box.depth);
     if (height > e.box.height)
-      throw pour.error("count", fmt::format("a count whose deposit fits the box: {} particles at a solid fraction of "
+      pour.fail("count", fmt::format("a count whose deposit fits the box: {} particles at a solid fraction of "
                                             "{} stand {:.1f} mm high, the box is {:.1f} mm",
                                             e.pluviation.count, e.pluviation.packing_fraction, height * 1e3,
                                             e.box.height * 1e3));
@@ -250,7 +253,7 @@ ExperimentConfig ExperimentConfig::from(Config& c) {
   e.settling.min_time = settle.get_double("min_time", e.settling.min_time, "s", Range::closed(0.0, kMaxTime));
   e.settling.max_time = settle.get_double("max_time", e.settling.max_time, "s", Range::open_closed(0.0, kMaxTime));
   if (e.settling.min_time > e.settling.max_time)
-    throw settle.error("min_time", fmt::format("at most max_time ({} s)", e.settling.max_time));
+    settle.fail("min_time", fmt::format("at most max_time ({} s)", e.settling.max_time));
 
   Config spin = c.get_table("spin_up");
   e.spin_up.g_level = read_g_level(spin, e.spin_up);
@@ -264,19 +267,12 @@ ExperimentConfig ExperimentConfig::from(Config& c) {
   e.numerics.max_overlap_fraction =
       num.get_double("max_overlap_fraction", e.numerics.max_overlap_fraction, "", Range::open_closed(0.0, 1.0));
   e.numerics.threads = static_cast<int>(num.get_int("threads", 0, Range::closed(0.0, kMaxThreads)));
-  check_time_step(c, e);
-  if (e.numerics.time_step > e.critical_time_step())
-    throw num.error("time_step", fmt::format("a step at most the critical step {} = {:.4g} s",
-                                             critical_time_step_formula(e.material.particle, e.material.wall_laws()),
-                                             e.critical_time_step()));
-
-  check_step_counts(c, e);
 
   Config out = c.get_table("output");
   e.output.snapshot_displacements =
       out.get_vector<double>("snapshot_displacements", e.output.snapshot_displacements, "m", Range::closed(0.0, kMaxLength));
   if (e.output.snapshot_displacements.size() > kMaxSnapshots)
-    throw out.error("snapshot_displacements", fmt::format("at most {} snapshots", kMaxSnapshots));
+    out.fail("snapshot_displacements", fmt::format("at most {} snapshots", kMaxSnapshots));
   std::sort(e.output.snapshot_displacements.begin(), e.output.snapshot_displacements.end());
   e.output.ground_reaction_step =
       out.get_double("ground_reaction_step", e.output.ground_reaction_step, "m", Range::open_closed(0.0, kMaxLength));
@@ -284,10 +280,18 @@ ExperimentConfig ExperimentConfig::from(Config& c) {
       out.get_double("checkpoint_interval", e.output.checkpoint_interval, "s", Range::open_closed(0.0, kMaxWallClock));
   e.output.log_interval = out.get_double("log_interval", e.output.log_interval, "s", Range::open_closed(0.0, kMaxWallClock));
   if (e.trapdoor.travel / e.output.ground_reaction_step > kMaxRows)
-    throw out.error("ground_reaction_step", fmt::format("a step that gives at most {:g} rows of trapdoor.csv over the "
+    out.fail("ground_reaction_step", fmt::format("a step that gives at most {:g} rows of trapdoor.csv over the "
                                                         "travel of {} m", kMaxRows, e.trapdoor.travel));
 
-  c.report_unused();
+  // What is derived from several keys is checked once they are all valid (a time step from a
+  // refused stiffness would only repeat that refusal).
+  if (!c.has_errors()) check_time_step(c, e);
+  if (!c.has_errors() && e.numerics.time_step > e.critical_time_step())
+    num.fail("time_step", fmt::format("a step at most the critical step {} = {:.4g} s",
+                                      critical_time_step_formula(e.material.particle, e.material.wall_laws()),
+                                      e.critical_time_step()));
+  if (!c.has_errors()) check_step_counts(c, e);
+  c.throw_errors();  // unknown keys, wrong values, broken rules: all of them, in that order
   c.add_derived("derived.critical_time_step", e.critical_time_step(), "s");
   c.add_derived("derived.time_step", e.time_step(), "s");
   c.add_derived("derived.skin", e.skin(), "m");

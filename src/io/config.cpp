@@ -25,6 +25,8 @@ struct Config::State {
   std::set<std::string> used;                           // full keys asked for (tables included)
   toml::table resolved;                                 // final values of the keys asked for
   std::map<std::string, std::string> units;             // full key -> unit, for comments
+  bool collecting = false;                              // collect_errors() called
+  std::vector<std::string> value_errors, rule_errors;   // recorded while collecting
 };
 
 namespace {
@@ -454,14 +456,36 @@ const char* element_name() {
   else return "strings";
 }
 
+// A look-up's reading: its value, or (while collecting errors) the fallback with the refusal
+// recorded. The key counts as used either way (it is a known key).
+template <class Read, class T>
+T guarded(Config::State& s, Read&& read, T fallback) {
+  if (!s.collecting) return read();
+  try {
+    return read();
+  } catch (const InputError& e) {
+    // Once: every look-up below a value that should be a table meets the same refusal (find()'s
+    // message then ends with the key looked up, " (it holds box.width)": compared without it).
+    const std::string_view message = e.what();
+    const std::string_view gist = message.substr(0, message.find(" (it holds "));
+    const bool seen = std::any_of(s.value_errors.begin(), s.value_errors.end(), [&](const std::string& m) {
+      return std::string_view(m).substr(0, m.find(" (it holds ")) == gist;
+    });
+    if (!seen) s.value_errors.emplace_back(message);
+    return fallback;
+  }
+}
+
 }  // namespace
 
 // ---------------------------------------------------------------------------------------------
 double Config::get_double(std::string_view key, double default_value, std::string_view unit, Range range) {
   const std::string k = full_key(key);
   state_->used.insert(k);  // even if the value is then refused: it is a known key
-  const toml::node* node = find(*state_, k);
-  const double x = node ? number_of(*state_, k, *node, unit, range) : default_value;
+  const double x = guarded(*state_, [&] {
+    const toml::node* node = find(*state_, k);
+    return node ? number_of(*state_, k, *node, unit, range) : default_value;
+  }, default_value);
   record(*state_, k, toml::value<double>(x), unit);
   return x;
 }
@@ -469,8 +493,10 @@ double Config::get_double(std::string_view key, double default_value, std::strin
 std::int64_t Config::get_int(std::string_view key, std::int64_t default_value, Range range) {
   const std::string k = full_key(key);
   state_->used.insert(k);  // even if the value is then refused: it is a known key
-  const toml::node* node = find(*state_, k);
-  const std::int64_t x = node ? integer_of(*state_, k, *node, range) : default_value;
+  const std::int64_t x = guarded(*state_, [&] {
+    const toml::node* node = find(*state_, k);
+    return node ? integer_of(*state_, k, *node, range) : default_value;
+  }, default_value);
   record(*state_, k, toml::value<std::int64_t>(x), {});
   return x;
 }
@@ -478,13 +504,13 @@ std::int64_t Config::get_int(std::string_view key, std::int64_t default_value, R
 bool Config::get_bool(std::string_view key, bool default_value) {
   const std::string k = full_key(key);
   state_->used.insert(k);  // even if the value is then refused: it is a known key
-  const toml::node* node = find(*state_, k);
-  bool x = default_value;
-  if (node) {
+  const bool x = guarded(*state_, [&] {
+    const toml::node* node = find(*state_, k);
+    if (!node) return default_value;
     auto b = node->as_boolean();
     if (!b) wrong(*state_, k, *node, "a boolean (true or false)");
-    x = b->get();
-  }
+    return b->get();
+  }, default_value);
   record(*state_, k, toml::value<bool>(x), {});
   return x;
 }
@@ -492,9 +518,10 @@ bool Config::get_bool(std::string_view key, bool default_value) {
 std::string Config::get_string(std::string_view key, std::string_view default_value) {
   const std::string k = full_key(key);
   state_->used.insert(k);  // even if the value is then refused: it is a known key
-  const toml::node* node = find(*state_, k);
-  std::string x(default_value);
-  if (node) x = element_of<std::string>(*state_, k, *node, {}, {});
+  const std::string x = guarded(*state_, [&] {
+    const toml::node* node = find(*state_, k);
+    return node ? element_of<std::string>(*state_, k, *node, {}, {}) : std::string(default_value);
+  }, std::string(default_value));
   record(*state_, k, toml::value<std::string>(x), {});
   return x;
 }
@@ -506,13 +533,13 @@ std::string Config::get_choice(std::string_view key, std::string_view default_va
   for (const std::string& c : choices) listed += (listed.empty() ? "" : ", ") + quoted(c);
   const std::string expected = "one of " + listed;
   state_->used.insert(k);  // even if the value is then refused: it is a known key
-  const toml::node* node = find(*state_, k);
-  std::string x(default_value);
-  if (node) {
+  const std::string x = guarded(*state_, [&] {
+    const toml::node* node = find(*state_, k);
+    if (!node) return std::string(default_value);
     auto str = node->as_string();
     if (!str || std::find(choices.begin(), choices.end(), str->get()) == choices.end()) wrong(*state_, k, *node, expected);
-    x = str->get();
-  }
+    return std::string(str->get());
+  }, std::string(default_value));
   record(*state_, k, toml::value<std::string>(x), {});
   return x;
 }
@@ -522,15 +549,16 @@ std::vector<T> Config::get_vector(std::string_view key, const std::vector<T>& de
                                   Range range) {
   const std::string k = full_key(key);
   state_->used.insert(k);  // even if the value is then refused: it is a known key
-  const toml::node* node = find(*state_, k);
-  std::vector<T> out = default_value;
-  if (node) {
+  const std::vector<T> out = guarded(*state_, [&] {
+    const toml::node* node = find(*state_, k);
+    if (!node) return default_value;
     auto array = node->as_array();
     if (!array) wrong(*state_, k, *node, fmt::format("an array of {}", element_name<T>()));
-    out.clear();
+    std::vector<T> values;
     for (std::size_t i = 0; i < array->size(); ++i)
-      out.push_back(element_of<T>(*state_, fmt::format("{}[{}]", k, i), *array->get(i), unit, range));
-  }
+      values.push_back(element_of<T>(*state_, fmt::format("{}[{}]", k, i), *array->get(i), unit, range));
+    return values;
+  }, default_value);
   toml::array resolved;
   for (const T& x : out) resolved.push_back(x);
   record(*state_, k, std::move(resolved), unit);
@@ -544,37 +572,49 @@ template std::vector<std::string> Config::get_vector(std::string_view, const std
                                                      std::string_view, Range);
 
 double Config::require_double(std::string_view key, std::string_view unit, Range range) {
-  if (!has(key)) missing(*state_, full_key(key), expectation("a number", unit, range));
-  return get_double(key, 0.0, unit, range);
+  return guarded(*state_, [&] {
+    if (!has(key)) missing(*state_, full_key(key), expectation("a number", unit, range));
+    return get_double(key, 0.0, unit, range);
+  }, 0.0);
 }
 
 std::int64_t Config::require_int(std::string_view key, Range range) {
-  if (!has(key)) missing(*state_, full_key(key), expectation("an integer", {}, range));
-  return get_int(key, 0, range);
+  return guarded(*state_, [&] {
+    if (!has(key)) missing(*state_, full_key(key), expectation("an integer", {}, range));
+    return get_int(key, 0, range);
+  }, std::int64_t{0});
 }
 
 bool Config::require_bool(std::string_view key) {
-  if (!has(key)) missing(*state_, full_key(key), "a boolean (true or false)");
-  return get_bool(key, false);
+  return guarded(*state_, [&] {
+    if (!has(key)) missing(*state_, full_key(key), "a boolean (true or false)");
+    return get_bool(key, false);
+  }, false);
 }
 
 std::string Config::require_string(std::string_view key) {
-  if (!has(key)) missing(*state_, full_key(key), "a string");
-  return get_string(key, "");
+  return guarded(*state_, [&] {
+    if (!has(key)) missing(*state_, full_key(key), "a string");
+    return get_string(key, "");
+  }, std::string());
 }
 
 template <class T>
 std::vector<T> Config::require_vector(std::string_view key, std::string_view unit, Range range) {
-  if (!has(key)) missing(*state_, full_key(key), expectation(fmt::format("an array of {}", element_name<T>()), unit, range));
-  return get_vector<T>(key, {}, unit, range);
+  return guarded(*state_, [&] {
+    if (!has(key))
+      missing(*state_, full_key(key), expectation(fmt::format("an array of {}", element_name<T>()), unit, range));
+    return get_vector<T>(key, {}, unit, range);
+  }, std::vector<T>{});
 }
 
 std::vector<std::vector<double>> Config::require_rows(std::string_view key, std::size_t columns,
                                                       std::string_view row_meaning) {
   const std::string k = full_key(key);
   const std::string expected = fmt::format("an array of rows, each [{}]", row_meaning);
-  if (!has(key)) missing(*state_, k, expected);
   state_->used.insert(k);
+  return guarded(*state_, [&] {
+  if (!has(key)) missing(*state_, k, expected);
   const toml::node* node = find(*state_, k);
   auto array = node->as_array();
   if (!array || array->empty()) wrong(*state_, k, *node, expected);
@@ -595,6 +635,7 @@ std::vector<std::vector<double>> Config::require_rows(std::string_view key, std:
   }
   record(*state_, k, std::move(resolved), {});
   return rows;
+  }, std::vector<std::vector<double>>{});
 }
 
 template std::vector<double> Config::require_vector(std::string_view, std::string_view, Range);
@@ -604,12 +645,17 @@ template std::vector<std::string> Config::require_vector(std::string_view, std::
 Config Config::get_table(std::string_view key) {
   const std::string k = full_key(key);
   state_->used.insert(k);  // even if the value is then refused: it is a known key
-  const toml::node* node = find(*state_, k);
-  if (node && !node->is_table()) wrong(*state_, k, *node, "a table");
+  guarded(*state_, [&] {
+    const toml::node* node = find(*state_, k);
+    if (node && !node->is_table()) wrong(*state_, k, *node, "a table");
+    return true;
+  }, false);
   return Config(state_, k + ".");
 }
 
-bool Config::has(std::string_view key) const { return find(*state_, full_key(key)) != nullptr; }
+bool Config::has(std::string_view key) const {
+  return guarded(*state_, [&] { return find(*state_, full_key(key)) != nullptr; }, false);
+}
 
 std::vector<std::string> Config::keys(std::string_view table_key) const {
   const toml::table* table = &state_->document;
@@ -663,6 +709,16 @@ InputError Config::error(std::string_view key, std::string_view expected) const 
                                   expected));
   return InputError(fmt::format("{}: {}: expected {}", state_->source, k, expected));
 }
+
+void Config::collect_errors() { state_->collecting = true; }
+
+void Config::fail(std::string_view key, std::string_view expected) {
+  InputError e = error(key, expected);
+  if (!state_->collecting) throw e;
+  state_->rule_errors.emplace_back(e.what());
+}
+
+bool Config::has_errors() const { return !state_->value_errors.empty() || !state_->rule_errors.empty(); }
 
 // ---------------------------------------------------------------------------------------------
 namespace {
@@ -733,17 +789,38 @@ std::vector<std::string> Config::unused_keys() const {
   return out;
 }
 
-void Config::report_unused() const {
+namespace {
+
+// The unknown keys' part of a report ("" if none).
+std::string unknown_keys_message(const Config::State& s) {
   std::vector<Unknown> unknown;
-  collect_unused(*state_, state_->document, unknown);
-  if (unknown.empty()) return;
-  std::string message = fmt::format("{}: {} unknown key{} (misspelt, or not used by this program):", state_->source,
+  collect_unused(s, s.document, unknown);
+  if (unknown.empty()) return "";
+  std::string message = fmt::format("{}: {} unknown key{} (misspelt, or not used by this program):", s.source,
                                     unknown.size(), unknown.size() == 1 ? "" : "s");
   for (const Unknown& u : unknown) {
-    message += fmt::format("\n  {}: unknown key {}", location(*state_, u.key, u.node), u.key);
-    const std::string close = suggestion(*state_, u.key);
+    message += fmt::format("\n  {}: unknown key {}", location(s, u.key, u.node), u.key);
+    const std::string close = suggestion(s, u.key);
     if (!close.empty()) message += fmt::format(" (did you mean {}?)", close);
   }
+  return message;
+}
+
+}  // namespace
+
+void Config::report_unused() const {
+  const std::string message = unknown_keys_message(*state_);
+  if (!message.empty()) throw InputError(message);
+}
+
+void Config::throw_errors() const {
+  std::vector<std::string> parts;
+  if (std::string unknown = unknown_keys_message(*state_); !unknown.empty()) parts.push_back(std::move(unknown));
+  for (const auto* errors : {&state_->value_errors, &state_->rule_errors})
+    parts.insert(parts.end(), errors->begin(), errors->end());
+  if (parts.empty()) return;
+  std::string message = parts.front();
+  for (std::size_t i = 1; i < parts.size(); ++i) message += "\n" + parts[i];
   throw InputError(message);
 }
 
