@@ -4,12 +4,14 @@
 
 #include <atomic>
 #include <csignal>
+#include <optional>
 
 #include <fmt/format.h>
 
 #include "core/errors.hpp"
 #include "core/thread_count.hpp"
 #include "experiment/run_folder.hpp"
+#include "experiment/run_log.hpp"
 #include "experiment/run_record.hpp"
 #include "experiment/run_recorder.hpp"
 #include "experiment/trapdoor_experiment.hpp"
@@ -49,7 +51,7 @@ void drop_snapshots_after(const fs::path& h5, std::int64_t step) {
 }
 
 // The run's description at the top of run.log.
-void describe_run(RunRecorder& recorder, const ExperimentConfig& c, const fs::path& out) {
+void describe_run(RunLog& recorder, const ExperimentConfig& c, const fs::path& out) {
   recorder.say(fmt::format("trapdem run '{}': {}", c.name, c.description));
   recorder.say(fmt::format("  box {:.1f} x {:.1f} x {:.1f} mm ({}), trapdoor {:.1f} mm at x = {:.1f} mm, travel {:.1f} mm "
                            "at {:.4g} m/s", c.box.width * 1e3, c.box.depth * 1e3, c.box.height * 1e3,
@@ -67,10 +69,8 @@ void describe_run(RunRecorder& recorder, const ExperimentConfig& c, const fs::pa
   recorder.say(fmt::format("  output in {}", out.string()));
 }
 
-}  // namespace
-
-bool run_in_folder(const FolderRunOptions& o) {
-  checked_thread_count(o.threads, "--threads");
+// The run once its folder's log is open (`log` is emplaced as soon as the folder is known).
+bool run_logged(const FolderRunOptions& o, std::optional<RunLog>& log) {
   const bool resume = !o.resume_dir.empty();
   fs::path out;
   Config config = [&] {
@@ -79,12 +79,16 @@ bool run_in_folder(const FolderRunOptions& o) {
       const RunFolder folder(out);
       if (!folder.has_checkpoint())
         throw InputError(fmt::format("--resume {}: no checkpoint.h5 there to resume from", out.string()));
+      log.emplace(folder.run_log(), o.quiet);
+      log->say(fmt::format("trapdem run --resume {}", out.string()));
       return Config::load_file(folder.resolved_toml().string());
     }
     return Config::load_file(o.config_file.string());
   }();
   config.apply_overrides(o.overrides);
   const ExperimentConfig experiment_config = ExperimentConfig::from(config);
+  const int threads = o.threads > 0 ? o.threads : experiment_config.numerics.threads;
+  if (threads > 0) omp_set_num_threads(threads);
   if (!resume) {
     out = o.out_dir.empty() ? fs::path("trapdem-out") / experiment_config.name : o.out_dir;
     const RunFolder folder(out);
@@ -94,15 +98,14 @@ bool run_in_folder(const FolderRunOptions& o) {
     std::error_code ec;
     fs::create_directories(out, ec);
     if (ec) throw FileError(fmt::format("cannot create the output folder {}: {}", out.string(), ec.message()));
+    log.emplace(folder.run_log(), o.quiet);  // before anything else is written: the log from its first line
+    describe_run(*log, experiment_config, out);
     write_text_atomically(folder.resolved_toml(), config.resolved_toml());
   }
   const RunFolder folder(out);
 
-  const int threads = o.threads > 0 ? o.threads : experiment_config.numerics.threads;
-  if (threads > 0) omp_set_num_threads(threads);
-
   TrapdoorExperiment experiment(experiment_config);
-  RunRecorder recorder(experiment, folder, o.quiet, RunStopRules{&g_signal, o.stop_after_seconds, o.stop_at_step});
+  RunRecorder recorder(experiment, folder, *log, RunStopRules{&g_signal, o.stop_after_seconds, o.stop_at_step});
   if (resume) {
     Checkpoint ckpt = read_checkpoint(folder.checkpoint_h5());
     const auto metadata = ckpt.metadata;
@@ -113,8 +116,6 @@ bool run_in_folder(const FolderRunOptions& o) {
     write_text_atomically(folder.trapdoor_csv(), ground_reaction_csv(experiment.ground_reaction()));
     recorder.say(fmt::format("resumed {} at t = {:.6f} s (step {}, stage {})", out.string(),
                              experiment.simulation().time(), step, stage_name(experiment.stage())));
-  } else {
-    describe_run(recorder, experiment_config, out);
   }
 
   g_signal = 0;
@@ -146,6 +147,25 @@ bool run_in_folder(const FolderRunOptions& o) {
                                         sim.step_count() - start_steps, experiment.particle_steps_run(),
                                         sim.particles().size()});
   return complete;
+}
+
+}  // namespace
+
+bool run_in_folder(const FolderRunOptions& o) {
+  checked_thread_count(o.threads, "--threads");
+  std::optional<RunLog> log;
+  try {
+    return run_logged(o, log);
+  } catch (const std::exception& e) {
+    // The error that stops the run belongs in its log too (if the log itself failed, it cannot).
+    if (log) {
+      try {
+        log->note(fmt::format("stopped by an error: {}", e.what()));
+      } catch (const FileError&) {
+      }
+    }
+    throw;
+  }
 }
 
 }  // namespace trapdem

@@ -23,20 +23,9 @@ std::string format_duration(double s) {
   return fmt::format("{:.1f} h", s / 3600.0);
 }
 
-RunRecorder::RunRecorder(TrapdoorExperiment& experiment, RunFolder folder, bool quiet, RunStopRules stop)
-    : experiment_(experiment), folder_(std::move(folder)), quiet_(quiet), stop_(stop) {
-  log_.open(folder_.run_log(), std::ios::app);
-  if (!log_) throw FileError(fmt::format("cannot open {} for writing", folder_.run_log().string()));
+RunRecorder::RunRecorder(TrapdoorExperiment& experiment, RunFolder folder, RunLog& log, RunStopRules stop)
+    : experiment_(experiment), folder_(std::move(folder)), log_(log), stop_(stop) {
   started_ = last_checkpoint_ = now_seconds();
-}
-
-void RunRecorder::say(const std::string& line) {
-  if (!quiet_) {
-    fmt::print("{}\n", line);
-    std::fflush(stdout);
-  }
-  log_ << line << '\n';
-  log_.flush();
 }
 
 void RunRecorder::progress(const StageProgress& p) {
@@ -75,9 +64,8 @@ void RunRecorder::checkpoint(const std::map<std::string, std::string>& state) {
   save_checkpoint(folder_.checkpoint_h5(), experiment_.simulation(), std::move(metadata));
   last_checkpoint_ = now_seconds();
   checkpoint_wanted_ = false;
-  log_ << fmt::format("checkpoint at t = {:.6f} s (step {}, stage {})\n", experiment_.simulation().time(),
-                      experiment_.simulation().step_count(), stage_name(experiment_.stage()));
-  log_.flush();
+  log_.note(fmt::format("checkpoint at t = {:.6f} s (step {}, stage {})", experiment_.simulation().time(),
+                        experiment_.simulation().step_count(), stage_name(experiment_.stage())));
 }
 
 bool RunRecorder::stop_requested() {

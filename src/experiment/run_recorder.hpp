@@ -5,12 +5,12 @@
 // signal, after a wall-clock budget or at a given step (tests).
 #include <atomic>
 #include <cstdint>
-#include <fstream>
 #include <map>
 #include <string>
 #include <vector>
 
 #include "experiment/run_folder.hpp"
+#include "experiment/run_log.hpp"
 #include "experiment/trapdoor_experiment.hpp"
 
 namespace trapdem {
@@ -23,11 +23,11 @@ struct RunStopRules {
 
 class RunRecorder : public ExperimentObserver {
  public:
-  // Opens the folder's run.log for appending; FileError if it cannot.
-  RunRecorder(TrapdoorExperiment& experiment, RunFolder folder, bool quiet, RunStopRules stop);
+  // Writes the run's lines to `log` (the folder's run.log, opened before the run by the caller).
+  RunRecorder(TrapdoorExperiment& experiment, RunFolder folder, RunLog& log, RunStopRules stop);
 
   // A line for run.log and, unless quiet, the terminal.
-  void say(const std::string& line);
+  void say(const std::string& line) { log_.say(line); }
 
   void progress(const StageProgress& p) override;
   void stage_finished(Stage stage, const std::string& summary) override;
@@ -40,9 +40,8 @@ class RunRecorder : public ExperimentObserver {
  private:
   TrapdoorExperiment& experiment_;
   RunFolder folder_;
-  bool quiet_;
+  RunLog& log_;
   RunStopRules stop_;
-  std::ofstream log_;
   double started_ = 0.0, last_checkpoint_ = 0.0;
   bool checkpoint_wanted_ = false;
   std::int64_t calls_ = 0, stop_calls_ = 0;
