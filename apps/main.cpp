@@ -60,6 +60,9 @@ int main(int argc, char** argv) {
   run_cmd->add_option("--set", run.overrides, "Override a key: --set trapdoor.rate=0.1 (repeatable)");
   run_cmd->add_option("--resume", run.resume_dir, "Carry on the run in this folder from its checkpoint")
       ->check(CLI::ExistingDirectory);
+  run_cmd->add_option("--allow-change", run.allowed_changes,
+                      "With --resume: KEY may differ from the run that was started (--set KEY=..., or an edited "
+                      "resolved.toml); logged in run.log and resolved.toml (repeatable)");
   run_cmd->add_flag("--quiet", run.quiet, "No progress lines on the terminal (run.log keeps them)");
   run_cmd->add_option("--stop-after", run.stop_after_seconds,
                       "Stop with a checkpoint after this many seconds of wall clock");

@@ -9,6 +9,7 @@
 #include "io/atomic_file.hpp"
 #include "io/checkpoint.hpp"
 #include "io/snapshot.hpp"
+#include "experiment/run_identity.hpp"
 
 namespace trapdem {
 
@@ -26,6 +27,7 @@ std::string format_duration(double s) {
 RunRecorder::RunRecorder(TrapdoorExperiment& experiment, RunFolder folder, RunLog& log, RunStopRules stop)
     : experiment_(experiment), folder_(std::move(folder)), log_(log), stop_(stop) {
   started_ = last_checkpoint_ = now_seconds();
+  if (folder_.has_snapshots()) snapshots_ = list_snapshots(folder_.snapshots_h5()).size();
 }
 
 void RunRecorder::progress(const StageProgress& p) {
@@ -45,6 +47,7 @@ void RunRecorder::snapshot_due(const std::string& label) {
   const std::string name =
       append_snapshot(folder_.snapshots_h5(), make_snapshot(sim.particles(), sim.time(), label,
                                                             experiment_.trapdoor_displacement(), sim.step_count()));
+  ++snapshots_;
   say(fmt::format("snapshot {} ({}, trapdoor at {:.2f} mm, {} particles)", name, label,
                   experiment_.trapdoor_displacement() * 1e3, sim.particles().size()));
 }
@@ -61,6 +64,11 @@ bool RunRecorder::checkpoint_due() {
 void RunRecorder::checkpoint(const std::map<std::string, std::string>& state) {
   auto metadata = state;
   metadata["run.name"] = experiment_.config().name;
+  metadata[kSnapshotCount] = std::to_string(snapshots_);
+  if (!configuration_.empty()) {
+    metadata[kConfiguration] = configuration_;
+    metadata[kConfigurationDigest] = config_digest(configuration_);
+  }
   save_checkpoint(folder_.checkpoint_h5(), experiment_.simulation(), std::move(metadata));
   last_checkpoint_ = now_seconds();
   checkpoint_wanted_ = false;

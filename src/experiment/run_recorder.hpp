@@ -29,6 +29,16 @@ class RunRecorder : public ExperimentObserver {
   // A line for run.log and, unless quiet, the terminal.
   void say(const std::string& line) { log_.say(line); }
 
+  // The run's resolved configuration (run_identity.hpp: resolved_values), stored with its digest in
+  // every checkpoint so that a resume can check it carries on the run that was started.
+  void set_configuration(std::string resolved_values) { configuration_ = std::move(resolved_values); }
+
+  // Checkpoint metadata: the snapshots in snapshots.h5 when it was taken (a resume keeps that many),
+  // the configuration and its digest.
+  static constexpr const char* kSnapshotCount = "run.snapshot_count";
+  static constexpr const char* kConfiguration = "run.resolved_toml";
+  static constexpr const char* kConfigurationDigest = "run.config_digest";
+
   void progress(const StageProgress& p) override;
   void stage_finished(Stage stage, const std::string& summary) override;
   void snapshot_due(const std::string& label) override;
@@ -44,6 +54,8 @@ class RunRecorder : public ExperimentObserver {
   RunStopRules stop_;
   double started_ = 0.0, last_checkpoint_ = 0.0;
   bool checkpoint_wanted_ = false;
+  std::size_t snapshots_ = 0;       // in snapshots.h5
+  std::string configuration_;
   std::int64_t calls_ = 0, stop_calls_ = 0;
 };
 
