@@ -28,10 +28,8 @@ std::string config_digest(std::string_view text) {
   return fmt::format("{:016x}", h);
 }
 
-namespace {
-
-// key -> value text of every leaf, [derived] left out; iterative (the depth is the document's).
-std::map<std::string, std::string> leaves(std::string_view text, const char* name) {
+// Iterative: the depth is the document's.
+std::map<std::string, std::string> value_leaves(std::string_view text, const char* name) {
   Config doc = Config::parse(text, name);
   std::map<std::string, std::string> out;
   std::vector<std::string> pending = {""};
@@ -48,11 +46,9 @@ std::map<std::string, std::string> leaves(std::string_view text, const char* nam
   return out;
 }
 
-}  // namespace
-
 std::vector<ConfigChange> config_changes(std::string_view started, std::string_view now) {
-  const auto before = leaves(started, "the checkpoint's configuration");
-  const auto after = leaves(now, "resolved.toml");
+  const auto before = value_leaves(started, "the checkpoint's configuration");
+  const auto after = value_leaves(now, "resolved.toml");
   std::vector<ConfigChange> changes;
   auto b = before.begin();
   auto a = after.begin();

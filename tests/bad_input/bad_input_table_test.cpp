@@ -144,7 +144,9 @@ const std::vector<BadInput>& table() {
       {"CalibrateBadVary", "calibrate {TINY} --vary trapdoor.rate --target {EMPTY} --at 10mm --out {EMPTY}/c", nullptr, 2, "trapdoor.rate"},
       {"CalibrateThreadsHuge", "calibrate {TINY} --vary trapdoor.rate=0.1 --target {EMPTY} --at 10mm --threads 100000", nullptr, 105, "expected 0 (all cores) or a thread count up to 4096"},
       // ---- element
-      {"ElementTooFewParticles", "element --preset tiny --set element.particles=10 --out {EMPTY}/e", nullptr, 2, "element.particles = 10 (an integer): expected an integer >= 50"},
+      {"ElementTooFewParticles", "element --preset tiny --set element.particles=10 --out {EMPTY}/e", nullptr, 2, "element.particles = 10 (an integer): expected an integer in [50, 1000000]"},
+      {"ElementHugeSpecimen", "element --preset tiny --set element.particles=1000000000 --out {EMPTY}/e", nullptr, 2, "expected an integer in [50, 1000000]"},
+      {"ElementHugeConfining", "element --preset tiny --confining 1e300 --out {EMPTY}/e", nullptr, 2, "element.confining[0] = 1e+300 (a float): expected a number in (0, 1000000000] (Pa)"},
       {"ElementInfInertialNumber", "element --preset tiny --set element.inertial_number=inf --out {EMPTY}/e", nullptr, 2, "element.inertial_number = inf (a float): expected a finite number"},
       {"ElementBadTest", "element --preset tiny --test shear", nullptr, 105, "shear"},
       {"ElementThreadsText", "element --preset tiny --threads abc", nullptr, 105, "expected 0 (all cores) or a thread count up to 4096"},

@@ -12,6 +12,7 @@
 #include "core/thread_count.hpp"
 #include "experiment/experiment_config.hpp"
 #include "experiment/folder_run.hpp"
+#include "experiment/run_identity.hpp"
 #include "io/config.hpp"
 
 namespace trapdem {
@@ -36,24 +37,11 @@ std::string refusal(const std::vector<std::string>& overrides) {
 std::vector<std::pair<std::string, bool>> float_keys() {
   Config c = Config::load_file(kTiny);
   ExperimentConfig::from(c);
-  Config resolved = Config::parse(c.resolved_toml(), "resolved.toml");
   std::vector<std::pair<std::string, bool>> out;
-  std::vector<std::string> pending = {""};
-  while (!pending.empty()) {
-    const std::string table = pending.back();
-    pending.pop_back();
-    for (const std::string& name : resolved.keys(table)) {
-      const std::string key = table.empty() ? name : table + "." + name;
-      if (key == "derived") continue;
-      if (resolved.is_table(key)) {
-        pending.push_back(key);
-        continue;
-      }
-      const std::string text = resolved.require_value_text(key);
-      const bool is_array = text.front() == '[';
-      const bool is_float = text.find_first_of(".e") != std::string::npos && text.front() != '"';
-      if (is_float) out.emplace_back(key, is_array);
-    }
+  for (const auto& [key, text] : value_leaves(c.resolved_toml(), "resolved.toml")) {
+    const bool is_array = text.front() == '[';
+    const bool is_float = text.find_first_of(".e") != std::string::npos && text.front() != '"';
+    if (is_float) out.emplace_back(key, is_array);
   }
   return out;
 }
