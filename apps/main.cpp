@@ -1,5 +1,8 @@
 // trapdem: the command line. Each subcommand is one stage of the work, from packing to figures.
+#include <charconv>
+#include <cmath>
 #include <exception>
+#include <string>
 
 #include <CLI/CLI.hpp>
 #include <fmt/format.h>
@@ -8,6 +11,7 @@
 #include "calibrate_command.hpp"
 #include "compare_command.hpp"
 #include "core/errors.hpp"
+#include "core/thread_count.hpp"
 #include "element_command.hpp"
 #include "piv_command.hpp"
 #include "run_command.hpp"
@@ -17,6 +21,32 @@
 
 int main(int argc, char** argv) {
   CLI::App app{"trapdem: trapdoor experiments with the discrete element method"};
+  // Every --threads: 0 (all cores) up to trapdem::kMaxThreads, with a message that says so (CLI11's
+  // NonNegativeNumber printed a 309-digit bound for "abc" and let 100000 through to libgomp).
+  const CLI::Validator thread_count(
+      [](std::string& text) -> std::string {
+        try {
+          trapdem::parse_thread_count(text, "--threads");
+          return {};
+        } catch (const trapdem::InputError& e) {
+          return e.what();
+        }
+      },
+      fmt::format("0..{}", trapdem::kMaxThreads), "thread count");
+  // A finite number in [lo, hi] (or (lo, hi] when lo is excluded), said in words for any other text.
+  auto number_in = [](double lo, double hi, bool lo_included, const char* unit) {
+    const std::string expected =
+        fmt::format("expected a number {} {:g} and <= {:g}{}", lo_included ? ">=" : ">", lo, hi, unit);
+    return CLI::Validator(
+        [=](std::string& text) -> std::string {
+          double x = 0.0;
+          const char* end = text.data() + text.size();
+          const auto [ptr, ec] = std::from_chars(text.data(), end, x);
+          const bool ok = ec == std::errc() && ptr == end && std::isfinite(x) && (lo_included ? x >= lo : x > lo) && x <= hi;
+          return ok ? std::string() : fmt::format("'{}': {}", text, expected);
+        },
+        expected, "bounded number");
+  };
   app.require_subcommand(1);
 
   trapdem::app::RunOptions run;
@@ -26,10 +56,13 @@ int main(int argc, char** argv) {
   run_cmd->add_option("--preset", run.preset, "Run a preset (see `trapdem presets`)");
   run_cmd->add_option("--out", run.out_dir, "Output folder (default: ./trapdem-out/<name>)");
   run_cmd->add_option("--threads", run.threads, "OpenMP threads (default: numerics.threads, else all cores)")
-      ->check(CLI::NonNegativeNumber);
+      ->check(thread_count);
   run_cmd->add_option("--set", run.overrides, "Override a key: --set trapdoor.rate=0.1 (repeatable)");
   run_cmd->add_option("--resume", run.resume_dir, "Carry on the run in this folder from its checkpoint")
       ->check(CLI::ExistingDirectory);
+  run_cmd->add_option("--allow-change", run.allowed_changes,
+                      "With --resume: KEY may differ from the run that was started (--set KEY=..., or an edited "
+                      "resolved.toml); logged in run.log and resolved.toml (repeatable)");
   run_cmd->add_flag("--quiet", run.quiet, "No progress lines on the terminal (run.log keeps them)");
   run_cmd->add_option("--stop-after", run.stop_after_seconds,
                       "Stop with a checkpoint after this many seconds of wall clock");
@@ -38,8 +71,8 @@ int main(int argc, char** argv) {
 
   trapdem::app::ShowcaseOptions showcase;
   auto* sc = app.add_subcommand("showcase", "A packing settles in a box under gravity; prints speed and floor load");
-  sc->add_option("--particles", showcase.particles, "Number of spheres")->check(CLI::PositiveNumber);
-  sc->add_option("--threads", showcase.threads, "OpenMP threads (default: all cores)")->check(CLI::NonNegativeNumber);
+  sc->add_option("--particles", showcase.particles, "Number of spheres")->check(number_in(0, 1e8, false, ""));
+  sc->add_option("--threads", showcase.threads, "OpenMP threads (default: all cores)")->check(thread_count);
 
   trapdem::AnalyzeOptions analyze;
   auto* an = app.add_subcommand("analyze", "Strain fields, shear bands and zone of influence of a run; writes DIR/analysis/");
@@ -51,7 +84,7 @@ int main(int argc, char** argv) {
   an->add_option("--front-depth", analyze.front_depth, "Front view depth from the glass (default 1.5 max diameters)");
   an->add_flag("--incremental", analyze.incremental, "Also accumulate incremental strain over the snapshots between");
   an->add_option("--grid", analyze.grid, "Grid spacing of the vertical displacement, e.g. 2mm (default d/2)");
-  an->add_option("--smoothing", analyze.smoothing, "Strain smoothing (Gaussian) for band tracing and the strain map, in mean diameters (default 2; 0: none)")->check(CLI::NonNegativeNumber);
+  an->add_option("--smoothing", analyze.smoothing, "Strain smoothing (Gaussian) for band tracing and the strain map, in mean diameters (default 2; 0: none)")->check(number_in(0, 100, true, " mean diameters"));
   an->add_option("--dumps", analyze.dumps, "LAMMPS/LIGGGHTS text dumps (id x y z radius) instead of snapshots.h5");
   an->add_option("--displacements", analyze.displacements, "Trapdoor displacement of each dump: 0mm,10mm,...");
   an->add_option("--config", analyze.config, "Geometry (TOML with [box], [trapdoor]; default DIR/resolved.toml)");
@@ -92,7 +125,7 @@ int main(int argc, char** argv) {
       ->excludes(piv_scale);
   piv_cmd->add_option("--fit", piv.fit, "Control point fit: affine or projective (default)")
       ->check(CLI::IsMember({"affine", "projective"}));
-  piv_cmd->add_option("--threads", piv.threads, "OpenMP threads (default: all cores)")->check(CLI::NonNegativeNumber);
+  piv_cmd->add_option("--threads", piv.threads, "OpenMP threads (default: all cores)")->check(thread_count);
   piv_cmd->add_flag("--no-figures", piv.no_figures, "Displacements, piv.h5 and strain only");
   piv_cmd->add_flag("--quiet", piv.quiet, "No progress lines");
 
@@ -112,11 +145,11 @@ int main(int argc, char** argv) {
   auto* render_cmd = app.add_subcommand("render", "DEM snapshots as the camera sees them through the front window (PNGs)");
   render_cmd->add_option("dir", render.dir, "Run folder (snapshots.h5, resolved.toml)")->required();
   render_cmd->add_option("--out", render.out, "Output folder (default DIR/camera)");
-  render_cmd->add_option("--px-per-mm", render.px_per_mm, "Image scale (default 4)")->check(CLI::PositiveNumber);
+  render_cmd->add_option("--px-per-mm", render.px_per_mm, "Image scale (default 4)")->check(number_in(0, 1000, false, " px per mm"));
   render_cmd->add_option("--config", render.config, "Geometry (default DIR/resolved.toml)");
   render_cmd->add_flag("--check", render.check, "Run PIV on the images and compare with the particle displacements");
   render_cmd->add_option("--subset", render.subset, "--check subset size, px (default about 3 diameters)");
-  render_cmd->add_option("--threads", render.threads, "OpenMP threads for --check")->check(CLI::NonNegativeNumber);
+  render_cmd->add_option("--threads", render.threads, "OpenMP threads for --check")->check(thread_count);
 
   trapdem::CompareOptions compare;
   auto* cmp_cmd = app.add_subcommand("compare", "DEM against PIV: vertical displacement on one grid, RMS error, overlay figure");
@@ -140,7 +173,7 @@ int main(int argc, char** argv) {
   study_cmd->add_option("--out", study.out, "Study folder (default trapdem-out/<study>-<scale>)");
   study_cmd->add_option("--scale", study.scale, "One of the study's scales, e.g. demo or paper (default: its default_scale)");
   study_cmd->add_option("--threads", study.threads, "OpenMP threads per run (default: all cores)")
-      ->check(CLI::NonNegativeNumber);
+      ->check(thread_count);
   study_cmd->add_flag("--quiet", study.quiet, "Runs' progress lines only in their run.log");
   study_cmd->add_flag("--report-only", study.report_only, "Run nothing: report on the finished cases");
 
@@ -154,7 +187,7 @@ int main(int argc, char** argv) {
   cal->add_option("--grid", calibrate.grid, "Spacing of the common grid (default 2mm)");
   cal->add_option("--piv-trapdoor", calibrate.piv_trapdoor, "Trapdoor centre X,Z in the PIV coordinates (see compare)");
   cal->add_option("--threads", calibrate.threads, "OpenMP threads per run (default: all cores)")
-      ->check(CLI::NonNegativeNumber);
+      ->check(thread_count);
   cal->add_flag("--quiet", calibrate.quiet, "Runs' progress lines only in their run.log");
 
   trapdem::app::ElementOptions element;
@@ -168,7 +201,7 @@ int main(int argc, char** argv) {
   el->add_option("--out", element.out_dir, "Output folder (default ./trapdem-out/element-<name>)");
   el->add_option("--set", element.overrides, "Override a key: --set element.particles=2000 (repeatable)");
   el->add_option("--threads", element.threads, "OpenMP threads (default: numerics.threads, else all cores)")
-      ->check(CLI::NonNegativeNumber);
+      ->check(thread_count);
   el->add_flag("--quiet", element.quiet, "No progress lines on the terminal (element.log keeps them)");
 
   CLI11_PARSE(app, argc, argv);

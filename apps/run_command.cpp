@@ -29,15 +29,18 @@ int list_presets() {
 
 int run_experiment(const RunOptions& o) {
   FolderRunOptions run;
+  if (!o.config_file.empty() && !o.preset.empty())
+    throw InputError("give either a configuration file or --preset, not both");
   if (!o.resume_dir.empty()) {
     run.resume_dir = o.resume_dir;
+    run.config_file = !o.config_file.empty() ? fs::path(o.config_file) : !o.preset.empty() ? preset_path(o.preset) : fs::path();
+    if (!o.out_dir.empty()) throw InputError(fmt::format("--resume {} writes into that folder: give no --out", o.resume_dir));
   } else {
-    if (!o.config_file.empty() && !o.preset.empty())
-      throw InputError("give either a configuration file or --preset, not both");
     run.config_file = !o.config_file.empty() ? fs::path(o.config_file) : preset_path(o.preset.empty() ? "demo" : o.preset);
     run.out_dir = o.out_dir;
   }
   run.overrides = o.overrides;
+  run.allowed_changes = o.allowed_changes;
   run.threads = o.threads;
   run.quiet = o.quiet;
   run.stop_after_seconds = o.stop_after_seconds;

@@ -14,6 +14,7 @@ struct RunOptions {
   std::string out_dir;                  // empty: ./trapdem-out/<name>
   std::vector<std::string> overrides;   // "key.path=value"
   std::string resume_dir;               // continue the run in this folder from its checkpoint
+  std::vector<std::string> allowed_changes;  // --allow-change KEY: with --resume, KEY may differ (logged)
   int threads = 0;                      // 0: the configuration's numerics.threads, else all cores
   bool quiet = false;                   // no progress lines on the terminal (run.log still has them)
   double stop_after_seconds = 0.0;      // > 0: stop (with a checkpoint) after this much wall clock

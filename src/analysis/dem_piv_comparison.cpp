@@ -53,6 +53,7 @@ GridSpec common_grid(const std::vector<Point2>& a, const std::vector<Point2>& b,
                                  format_mm(ba.x0), format_mm(ba.x1), format_mm(ba.z0), format_mm(ba.z1),
                                  format_mm(bb.x0), format_mm(bb.x1), format_mm(bb.z0), format_mm(bb.z1)));
   }
+  check_grid_memory(x1 - x0, z1 - z0, spacing, "the comparison grid spacing");
   GridSpec g;
   g.spacing = spacing;
   const double i0 = std::ceil(x0 / spacing - 1e-9), i1 = std::floor(x1 / spacing + 1e-9);

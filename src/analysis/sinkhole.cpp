@@ -123,6 +123,11 @@ SuppositionEstimate scenario_supposition(double throat, const std::vector<Blanke
     c.layer = l;
     c.widening = 2.0 * l.thickness * std::tan(l.angle_of_draw_deg * kDegree);
     d += c.widening;
+    // Every input is finite, yet 2 t tan(alpha) can overflow (t = 1e308 m): no estimate is inf.
+    if (!std::isfinite(d))
+      throw InputError(fmt::format("layer {}: {:g} m at {:g} deg gives a surface diameter beyond any number (D_s = {} "
+                                   "m); expected a thickness in metres that gives a finite D_s",
+                                   i + 1, l.thickness, l.angle_of_draw_deg, d));
     c.diameter_above = d;
     e.total_thickness += l.thickness;
     e.layers.push_back(c);

@@ -176,10 +176,26 @@ class Parser {
     ++i_;
     return out;
   }
+  // Objects and arrays nest at most this deep: the parser (and a Json's destructor) recurse once
+  // per level, and a damaged or hostile file must not reach the end of the stack (issue 14).
+  static constexpr int kMaxDepth = 256;
+  struct Nesting {
+    Parser& p;
+    explicit Nesting(Parser& parser) : p(parser) {
+      if (++p.depth_ > kMaxDepth) p.fail(fmt::format("objects and arrays nested deeper than {}", kMaxDepth));
+    }
+    ~Nesting() { --p.depth_; }
+  };
+
   Json value() {
     skip();
     if (i_ >= s_.size()) fail("unexpected end");
     const char c = s_[i_];
+    if (c == '{' || c == '[') return nested(c);
+    return scalar(c);
+  }
+  Json nested(char c) {
+    const Nesting level(*this);
     if (c == '{') {
       ++i_;
       Json o = Json::object();
@@ -211,6 +227,9 @@ class Parser {
         fail("expected ',' or ']'");
       }
     }
+    return scalar(c);
+  }
+  Json scalar(char c) {
     if (c == '"') return Json(string());
     if (literal("null")) return Json();
     if (literal("true")) return Json(true);
@@ -225,6 +244,7 @@ class Parser {
   std::string_view s_;
   const std::string& source_;
   std::size_t i_ = 0;
+  int depth_ = 0;  // objects and arrays open at i_
 };
 
 }  // namespace

@@ -18,9 +18,9 @@ ElementSetup read_element_setup(Config& c) {
   Config t = c.get_table("element");
   e.kind = t.get_choice("test", "biaxial", {"biaxial", "triaxial"}) == "biaxial" ? ElementTestKind::biaxial
                                                                                  : ElementTestKind::triaxial;
-  e.confining = t.get_vector<double>("confining", e.confining, "Pa", Range::positive());
+  e.confining = t.get_vector<double>("confining", e.confining, "Pa", Range::open_closed(0.0, 1e9));  // 1 GPa crushes any grain
   if (e.confining.empty()) throw t.error("confining", "at least one confining stress > 0 (Pa)");
-  e.particles = t.get_int("particles", e.particles, Range::at_least(50));
+  e.particles = t.get_int("particles", e.particles, Range::closed(50, 1e6));  // memory and hours: 4000 is usual
   e.inertial_number = t.get_double("inertial_number", e.inertial_number, "", Range::open_closed(0.0, 0.1));
   e.preparation_inertial_number =
       t.get_double("preparation_inertial_number", e.preparation_inertial_number, "", Range::open_closed(0.0, 0.1));

@@ -2,15 +2,39 @@
 
 #include <algorithm>
 #include <cmath>
+#include <iterator>
+#include <limits>
 #include <numbers>
 
 #include <fmt/format.h>
 
+#include "core/thread_count.hpp"
 #include "io/config.hpp"
 
 namespace trapdem {
 
 namespace {
+
+// Upper bounds set by physics or memory (docs/config.md states each in its key's row). A value
+// beyond them is a typo or a unit slip (mm written as m), never an experiment this program can run.
+constexpr double kMaxLength = 10.0;            // m: box, trapdoor, travel, heights; strongboxes are < 2 m
+constexpr double kMaxDiameter = 1.0;           // m
+constexpr double kMaxDensity = 1e5;            // kg/m^3: the densest solid (osmium) is 22 590
+constexpr double kMaxRate = 10.0;              // m/s: a trapdoor lowered faster is no longer quasi-static
+constexpr double kMaxStiffness = 1e14;         // N/m: 2000x the paper's k_n = 4.5e10 N/m
+constexpr double kMaxModulus = 1e13;           // Pa: diamond has E = 1.2e12 Pa
+constexpr double kMaxFriction = 10.0;          // mu_s, mu_k, mu_r: measured ones are below 2
+constexpr double kMaxRollingDamping = 10.0;    // eta_r: usual 0.3
+constexpr std::int64_t kMaxParticles = 100'000'000;  // memory: about 0.5 kB per particle with its contacts
+constexpr double kMaxTime = 1e4;               // s of simulated time in one stage
+constexpr double kMaxGLevel = 1000.0;          // g: centrifuges reach a few hundred g
+constexpr double kMaxDropHeight = 100.0;       // m
+constexpr double kMaxFlowRate = 1e4;           // kg/s
+constexpr double kMaxSkinFraction = 2.0;       // of the largest diameter: a larger skin lists ~100x the pairs
+constexpr double kMaxWallClock = 1e7;          // s (116 days) between checkpoints or progress lines
+constexpr double kMaxSteps = 1e11;             // time steps of one stage: years of computing
+constexpr double kMaxRows = 1e7;               // trapdoor.csv rows
+constexpr std::size_t kMaxSnapshots = 10'000;  // output.snapshot_displacements entries
 
 // A contact law's keys, with defaults taken from `base` (the particle law for the walls). The
 // normal model's own keys: normal_stiffness and tangential_stiffness for "linear"; for "hertz",
@@ -25,50 +49,52 @@ ContactLaw read_contact_law(Config table, const ContactLaw& base) {
   if (hertz) {
     for (const char* key : {"normal_stiffness", "tangential_stiffness"})
       if (table.has(key))
-        throw table.error(key, "no stiffness with normal_model = \"hertz\" (its stiffness follows from youngs_modulus "
+        table.fail(key, "no stiffness with normal_model = \"hertz\" (its stiffness follows from youngs_modulus "
                                "and poisson_ratio); remove the key or set normal_model = \"linear\"");
     law.normal_stiffness = base.normal_stiffness;
     law.tangential_stiffness = base.tangential_stiffness;
   } else {
-    law.normal_stiffness = table.get_double("normal_stiffness", base.normal_stiffness, "N/m", Range::positive());
+    law.normal_stiffness = table.get_double("normal_stiffness", base.normal_stiffness, "N/m", Range::open_closed(0.0, kMaxStiffness));
     const double kt_default = table.has("normal_stiffness") ? 0.5 * law.normal_stiffness : base.tangential_stiffness;
-    law.tangential_stiffness = table.get_double("tangential_stiffness", kt_default, "N/m", Range::non_negative());
+    law.tangential_stiffness = table.get_double("tangential_stiffness", kt_default, "N/m", Range::closed(0.0, kMaxStiffness));
   }
   // Read only when given (or required): the unset default (0) is no valid modulus to write back.
-  law.youngs_modulus = hertz && !(base.youngs_modulus > 0.0) ? table.require_double("youngs_modulus", "Pa", Range::positive())
-                       : table.has("youngs_modulus")        ? table.get_double("youngs_modulus", 0.0, "Pa", Range::positive())
+  law.youngs_modulus = hertz && !(base.youngs_modulus > 0.0) ? table.require_double("youngs_modulus", "Pa", Range::open_closed(0.0, kMaxModulus))
+                       : table.has("youngs_modulus")        ? table.get_double("youngs_modulus", 0.0, "Pa", Range::open_closed(0.0, kMaxModulus))
                                                              : base.youngs_modulus;
   law.poisson_ratio = table.get_double("poisson_ratio", base.poisson_ratio, "", Range{0.0, 0.5, true, false});
   law.restitution = table.get_double("restitution", base.restitution, "", Range::unit_open_closed());
-  law.static_friction = table.get_double("static_friction", base.static_friction, "", Range::non_negative());
+  law.static_friction = table.get_double("static_friction", base.static_friction, "", Range::closed(0.0, kMaxFriction));
   const double mu_k_default = table.has("static_friction") ? law.static_friction : base.kinetic_friction;
-  law.kinetic_friction = table.get_double("kinetic_friction", mu_k_default, "", Range::non_negative());
-  law.rolling_friction = table.get_double("rolling_friction", base.rolling_friction, "", Range::non_negative());
+  law.kinetic_friction = table.get_double("kinetic_friction", mu_k_default, "", Range::closed(0.0, kMaxFriction));
+  law.rolling_friction = table.get_double("rolling_friction", base.rolling_friction, "", Range::closed(0.0, kMaxFriction));
   law.rolling_model = parse_choice<RollingModel>(
       table.get_choice("rolling_model", to_string(base.rolling_model), choice_names<RollingModel>()));
   law.lever_arm = parse_choice<RollingLeverArm>(
       table.get_choice("lever_arm", to_string(base.lever_arm), choice_names<RollingLeverArm>()));
   law.rolling_stiffness = parse_choice<RollingStiffness>(
       table.get_choice("rolling_stiffness", to_string(base.rolling_stiffness), choice_names<RollingStiffness>()));
-  law.rolling_damping = table.get_double("rolling_damping", base.rolling_damping, "", Range::non_negative());
+  law.rolling_damping = table.get_double("rolling_damping", base.rolling_damping, "", Range::closed(0.0, kMaxRollingDamping));
   return law;
 }
 
 SizeDistribution read_sizes(Config& p) {
   const std::string kind = p.get_choice("size", "single", {"single", "uniform", "grading"});
-  if (kind == "single") return SizeDistribution::single(p.get_double("diameter", 0.002, "m", Range::positive()));
+  if (kind == "single") return SizeDistribution::single(p.get_double("diameter", 0.002, "m", Range::open_closed(0.0, kMaxDiameter)));
   if (kind == "uniform") {
-    const double lo = p.require_double("min_diameter", "m", Range::positive());
-    const double hi = p.require_double("max_diameter", "m", Range::positive());
-    if (hi < lo) throw p.error("max_diameter", fmt::format("a size >= min_diameter ({} m)", lo));
-    return SizeDistribution::uniform(lo, hi);
+    const double lo = p.require_double("min_diameter", "m", Range::open_closed(0.0, kMaxDiameter));
+    const double hi = p.require_double("max_diameter", "m", Range::open_closed(0.0, kMaxDiameter));
+    if (!(lo > 0.0) || !(hi > 0.0)) return SizeDistribution::single(0.002);  // refused and recorded: read on
+    if (hi < lo) p.fail("max_diameter", fmt::format("a size >= min_diameter ({} m)", lo));
+    return SizeDistribution::uniform(lo, std::max(lo, hi));
   }
   std::vector<std::pair<double, double>> table;
   for (const auto& row : p.require_rows("grading", 2, "diameter in m, percent passing")) table.emplace_back(row[0], row[1]);
   try {
     return SizeDistribution::grading(std::move(table), "grading");
   } catch (const InputError& e) {
-    throw p.error("grading", e.what());  // names the file and line of the table
+    p.fail("grading", e.what());  // names the file and line of the table
+    return SizeDistribution::single(0.002);  // reading goes on to find the other errors
   }
 }
 
@@ -78,49 +104,114 @@ void read_specimen(Config& c, ExperimentConfig& e) {
   e.description = c.get_string("description", "");
 
   Config box = c.get_table("box");
-  e.box.width = box.get_double("width", e.box.width, "m", Range::positive());
-  e.box.depth = box.get_double("depth", e.box.depth, "m", Range::positive());
-  e.box.height = box.get_double("height", e.box.height, "m", Range::positive());
+  e.box.width = box.get_double("width", e.box.width, "m", Range::open_closed(0.0, kMaxLength));
+  e.box.depth = box.get_double("depth", e.box.depth, "m", Range::open_closed(0.0, kMaxLength));
+  e.box.height = box.get_double("height", e.box.height, "m", Range::open_closed(0.0, kMaxLength));
   e.box.periodic_depth = box.get_choice("depth_boundary", "walls", {"walls", "periodic"}) == "periodic";
 
   Config door = c.get_table("trapdoor");
-  e.trapdoor.width = door.get_double("width", e.trapdoor.width, "m", Range::positive());
+  e.trapdoor.width = door.get_double("width", e.trapdoor.width, "m", Range::open_closed(0.0, kMaxLength));
   if (e.trapdoor.width >= e.box.width)
-    throw door.error("width", fmt::format("a trapdoor narrower than the box (box.width = {} m)", e.box.width));
-  e.trapdoor.centre = door.get_double("centre", 0.5 * e.box.width, "m", Range::positive());
+    door.fail("width", fmt::format("a trapdoor narrower than the box (box.width = {} m)", e.box.width));
+  e.trapdoor.centre = door.get_double("centre", 0.5 * e.box.width, "m", Range::open_closed(0.0, kMaxLength));
   if (e.trapdoor.centre - 0.5 * e.trapdoor.width <= 0.0 || e.trapdoor.centre + 0.5 * e.trapdoor.width >= e.box.width)
-    throw door.error("centre", fmt::format("a position that keeps the trapdoor inside the box (0 .. {} m) with "
+    door.fail("centre", fmt::format("a position that keeps the trapdoor inside the box (0 .. {} m) with "
                                            "fixed base on both sides", e.box.width));
-  e.trapdoor.travel = door.get_double("travel", e.trapdoor.travel, "m", Range::positive());
-  e.trapdoor.rate = door.get_double("rate", e.trapdoor.rate, "m/s", Range::positive());
-  e.trapdoor.cavity_depth = door.get_double("cavity_depth", e.trapdoor.travel + 0.01, "m", Range::positive());
+  e.trapdoor.travel = door.get_double("travel", e.trapdoor.travel, "m", Range::open_closed(0.0, kMaxLength));
+  e.trapdoor.rate = door.get_double("rate", e.trapdoor.rate, "m/s", Range::open_closed(0.0, kMaxRate));
+  e.trapdoor.cavity_depth = door.get_double("cavity_depth", e.trapdoor.travel + 0.01, "m", Range::open_closed(0.0, kMaxLength));
   if (e.trapdoor.cavity_depth < e.trapdoor.travel)
-    throw door.error("cavity_depth", fmt::format("at least the travel ({} m)", e.trapdoor.travel));
+    door.fail("cavity_depth", fmt::format("at least the travel ({} m)", e.trapdoor.travel));
 }
 
 // pluviation.fill_height: the pour's end, and the soil height the sinkhole estimate falls back on.
 double read_fill_height(Config& pour, const BoxConfig& box) {
   const double fill_height = pour.get_double("fill_height", 0.0, "m", Range::non_negative());
-  if (fill_height > box.height) throw pour.error("fill_height", fmt::format("at most the box height ({} m)", box.height));
+  if (fill_height > box.height) pour.fail("fill_height", fmt::format("at most the box height ({} m)", box.height));
   return fill_height;
 }
 
 double read_g_level(Config& spin, const SpinUpConfig& defaults) {
-  return spin.get_double("g_level", defaults.g_level, "g", Range::at_least(1.0));
+  return spin.get_double("g_level", defaults.g_level, "g", Range::closed(1.0, kMaxGLevel));
+}
+
+// The key behind the critical time step: the stiffness (linear) or Young's modulus (Hertz) of the
+// law with the shortest contact time scale.
+std::string stiffest_key(const ExperimentConfig& e) {
+  const double r = 0.5 * e.material.sizes.min_diameter();
+  const double m = e.material.density * 4.0 / 3.0 * std::numbers::pi * r * r * r;
+  const std::pair<const ContactLaw*, const char*> laws[] = {{&e.material.particle, "contact"},
+                                                            {&e.material.base, "walls.base"},
+                                                            {&e.material.front, "walls.front"},
+                                                            {&e.material.back, "walls.back"}};
+  std::size_t stiffest = 0;
+  double shortest = std::numeric_limits<double>::infinity();
+  for (std::size_t k = 0; k < std::size(laws); ++k) {
+    const double t = contact_time_scale(*laws[k].first, e.material.particle, m, r);
+    if (t < shortest || std::isnan(t)) {
+      shortest = t;
+      stiffest = k;
+    }
+  }
+  const ContactLaw& law = *laws[stiffest].first;
+  return fmt::format("{}.{}", laws[stiffest].second,
+                     law.normal_model == NormalModel::hertz ? "youngs_modulus" : "normal_stiffness");
+}
+
+// The time step derived from the keys must be a usable number: a denormal stiffness (1e-320 N/m)
+// passes "> 0" and gives sqrt(m/k) = inf; a huge one with tiny particles gives a step below what
+// a double resolves against the simulated time.
+void check_time_step(Config& c, const ExperimentConfig& e) {
+  const double critical = e.critical_time_step();
+  if (!std::isfinite(critical) || !(critical > 0.0))
+    return c.fail(stiffest_key(e), fmt::format("a value that gives a finite critical time step ({} = {} s with the "
+                                               "density and smallest diameter given)",
+                                               critical_time_step_formula(e.material.particle, e.material.wall_laws()),
+                                               critical));
+  if (!(e.time_step() >= 1e-15))
+    return c.fail(e.numerics.time_step > 0.0 ? "numerics.time_step"
+                  : critical >= 1e-15       ? "numerics.time_step_fraction"
+                                            : stiffest_key(e),
+                  fmt::format("a time step of at least 1e-15 s (it is {:.4g} s)", e.time_step()));
+}
+
+// Each stage's steps, from the simulated times and the time step: a count beyond kMaxSteps would
+// run for years (and its step counter would lose exactness in the progress estimates).
+void check_step_counts(Config& c, const ExperimentConfig& e) {
+  const double dt = e.time_step();
+  const std::pair<const char*, double> stages[] = {
+      {"settling.max_time", e.settling.max_time},
+      {"spin_up.ramp_time", e.spin_up.ramp_time + e.settling.max_time},
+      {"trapdoor.rate", e.trapdoor.travel / e.trapdoor.rate},
+  };
+  for (const auto& [key, seconds] : stages) {
+    if (seconds / dt > kMaxSteps)
+      return c.fail(key, fmt::format("a stage of at most {:g} time steps: {:.4g} s of simulated time at dt = {:.4g} s "
+                                     "is {:.3g} steps", kMaxSteps, seconds, dt, seconds / dt));
+  }
+  if (e.pluviation.count == 0) {
+    const double d = e.material.sizes.mean_diameter();
+    const double expected = e.pluviation.packing_fraction * e.box.width * e.box.depth * e.pluviation.fill_height /
+                            (std::numbers::pi / 6.0 * d * d * d);
+    if (!(expected <= double(kMaxParticles)))
+      c.fail("pluviation.fill_height", fmt::format("a fill height that needs at most {} particles (memory: about "
+                                                          "0.5 kB each); it needs {:.3g}", kMaxParticles, expected));
+  }
 }
 
 }  // namespace
 
 ExperimentConfig ExperimentConfig::from(Config& c) {
+  c.collect_errors();
   ExperimentConfig e;
   read_specimen(c, e);
 
   Config particles = c.get_table("particles");
-  e.material.density = particles.get_double("density", e.material.density, "kg/m^3", Range::positive());
+  e.material.density = particles.get_double("density", e.material.density, "kg/m^3", Range::open_closed(0.0, kMaxDensity));
   e.material.sizes = read_sizes(particles);
   if (e.material.sizes.max_diameter() * 3.0 > e.box.depth && !e.box.periodic_depth) {
     const char* size_key = particles.has("grading") ? "grading" : (particles.has("max_diameter") ? "max_diameter" : "diameter");
-    throw particles.error(size_key, fmt::format("particles at most a third of the box depth ({} m)", e.box.depth));
+    particles.fail(size_key, fmt::format("particles at most a third of the box depth ({} m)", e.box.depth));
   }
 
   Config contact = c.get_table("contact");
@@ -132,16 +223,16 @@ ExperimentConfig ExperimentConfig::from(Config& c) {
   for (const ContactLaw* law : e.material.wall_laws()) {
     // A Hertz wall contact combines the wall's material with the particles'.
     if (law->normal_model == NormalModel::hertz && !(e.material.particle.youngs_modulus > 0.0))
-      throw contact.error("youngs_modulus", "the particles' Young's modulus in Pa: a wall has normal_model = \"hertz\"");
+      contact.fail("youngs_modulus", "the particles' Young's modulus in Pa: a wall has normal_model = \"hertz\"");
   }
 
   Config pour = c.get_table("pluviation");
-  e.pluviation.count = pour.get_int("count", 0, Range::non_negative());
+  e.pluviation.count = pour.get_int("count", 0, Range::closed(0.0, double(kMaxParticles)));
   e.pluviation.fill_height = read_fill_height(pour, e.box);
   if (e.pluviation.count == 0 && e.pluviation.fill_height == 0.0)
-    throw pour.error("count", "a particle count or a fill_height (m) to end the pour");
-  e.pluviation.drop_height = pour.get_double("drop_height", e.pluviation.drop_height, "m", Range::non_negative());
-  e.pluviation.flow_rate = pour.get_double("flow_rate", 0.0, "kg/s", Range::non_negative());
+    pour.fail("count", "a particle count or a fill_height (m) to end the pour");
+  e.pluviation.drop_height = pour.get_double("drop_height", e.pluviation.drop_height, "m", Range::closed(0.0, kMaxDropHeight));
+  e.pluviation.flow_rate = pour.get_double("flow_rate", 0.0, "kg/s", Range::closed(0.0, kMaxFlowRate));
   e.pluviation.packing_fraction =
       pour.get_double("packing_fraction", e.pluviation.packing_fraction, "", Range::open_closed(0.0, 0.75));
   e.pluviation.seed = static_cast<std::uint64_t>(pour.get_int("seed", 1, Range::non_negative()));
@@ -151,47 +242,56 @@ ExperimentConfig ExperimentConfig::from(Config& c) {
     const double height = double(e.pluviation.count) * std::numbers::pi / 6.0 * d * d * d /
                           (e.pluviation.packing_fraction * e.box.width * e.box.depth);
     if (height > e.box.height)
-      throw pour.error("count", fmt::format("a count whose deposit fits the box: {} particles at a solid fraction of "
+      pour.fail("count", fmt::format("a count whose deposit fits the box: {} particles at a solid fraction of "
                                             "{} stand {:.1f} mm high, the box is {:.1f} mm",
                                             e.pluviation.count, e.pluviation.packing_fraction, height * 1e3,
                                             e.box.height * 1e3));
   }
 
   Config settle = c.get_table("settling");
-  e.settling.energy_ratio = settle.get_double("energy_ratio", e.settling.energy_ratio, "", Range::positive());
-  e.settling.min_time = settle.get_double("min_time", e.settling.min_time, "s", Range::non_negative());
-  e.settling.max_time = settle.get_double("max_time", e.settling.max_time, "s", Range::positive());
+  e.settling.energy_ratio = settle.get_double("energy_ratio", e.settling.energy_ratio, "", Range::open_closed(0.0, 1.0));
+  e.settling.min_time = settle.get_double("min_time", e.settling.min_time, "s", Range::closed(0.0, kMaxTime));
+  e.settling.max_time = settle.get_double("max_time", e.settling.max_time, "s", Range::open_closed(0.0, kMaxTime));
   if (e.settling.min_time > e.settling.max_time)
-    throw settle.error("min_time", fmt::format("at most max_time ({} s)", e.settling.max_time));
+    settle.fail("min_time", fmt::format("at most max_time ({} s)", e.settling.max_time));
 
   Config spin = c.get_table("spin_up");
   e.spin_up.g_level = read_g_level(spin, e.spin_up);
-  e.spin_up.ramp_time = spin.get_double("ramp_time", e.spin_up.ramp_time, "s", Range::non_negative());
+  e.spin_up.ramp_time = spin.get_double("ramp_time", e.spin_up.ramp_time, "s", Range::closed(0.0, kMaxTime));
 
   Config num = c.get_table("numerics");
   e.numerics.time_step = num.get_double("time_step", 0.0, "s", Range::non_negative());
   e.numerics.time_step_fraction =
       num.get_double("time_step_fraction", e.numerics.time_step_fraction, "", Range::open_closed(0.0, 1.0));
-  e.numerics.skin_fraction = num.get_double("skin_fraction", e.numerics.skin_fraction, "", Range::positive());
+  e.numerics.skin_fraction = num.get_double("skin_fraction", e.numerics.skin_fraction, "", Range::open_closed(0.0, kMaxSkinFraction));
   e.numerics.max_overlap_fraction =
       num.get_double("max_overlap_fraction", e.numerics.max_overlap_fraction, "", Range::open_closed(0.0, 1.0));
-  e.numerics.threads = static_cast<int>(num.get_int("threads", 0, Range::non_negative()));
-  if (e.numerics.time_step > e.critical_time_step())
-    throw num.error("time_step", fmt::format("a step at most the critical step {} = {:.4g} s",
-                                             critical_time_step_formula(e.material.particle, e.material.wall_laws()),
-                                             e.critical_time_step()));
+  e.numerics.threads = static_cast<int>(num.get_int("threads", 0, Range::closed(0.0, kMaxThreads)));
 
   Config out = c.get_table("output");
   e.output.snapshot_displacements =
-      out.get_vector<double>("snapshot_displacements", e.output.snapshot_displacements, "m", Range::non_negative());
+      out.get_vector<double>("snapshot_displacements", e.output.snapshot_displacements, "m", Range::closed(0.0, kMaxLength));
+  if (e.output.snapshot_displacements.size() > kMaxSnapshots)
+    out.fail("snapshot_displacements", fmt::format("at most {} snapshots", kMaxSnapshots));
   std::sort(e.output.snapshot_displacements.begin(), e.output.snapshot_displacements.end());
   e.output.ground_reaction_step =
-      out.get_double("ground_reaction_step", e.output.ground_reaction_step, "m", Range::positive());
+      out.get_double("ground_reaction_step", e.output.ground_reaction_step, "m", Range::open_closed(0.0, kMaxLength));
   e.output.checkpoint_interval =
-      out.get_double("checkpoint_interval", e.output.checkpoint_interval, "s", Range::positive());
-  e.output.log_interval = out.get_double("log_interval", e.output.log_interval, "s", Range::positive());
+      out.get_double("checkpoint_interval", e.output.checkpoint_interval, "s", Range::open_closed(0.0, kMaxWallClock));
+  e.output.log_interval = out.get_double("log_interval", e.output.log_interval, "s", Range::open_closed(0.0, kMaxWallClock));
+  if (e.trapdoor.travel / e.output.ground_reaction_step > kMaxRows)
+    out.fail("ground_reaction_step", fmt::format("a step that gives at most {:g} rows of trapdoor.csv over the "
+                                                        "travel of {} m", kMaxRows, e.trapdoor.travel));
 
-  c.report_unused();
+  // What is derived from several keys is checked once they are all valid (a time step from a
+  // refused stiffness would only repeat that refusal).
+  if (!c.has_errors()) check_time_step(c, e);
+  if (!c.has_errors() && e.numerics.time_step > e.critical_time_step())
+    num.fail("time_step", fmt::format("a step at most the critical step {} = {:.4g} s",
+                                      critical_time_step_formula(e.material.particle, e.material.wall_laws()),
+                                      e.critical_time_step()));
+  if (!c.has_errors()) check_step_counts(c, e);
+  c.throw_errors();  // unknown keys, wrong values, broken rules: all of them, in that order
   c.add_derived("derived.critical_time_step", e.critical_time_step(), "s");
   c.add_derived("derived.time_step", e.time_step(), "s");
   c.add_derived("derived.skin", e.skin(), "m");

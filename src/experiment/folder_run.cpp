@@ -2,13 +2,19 @@
 
 #include <omp.h>
 
+#include <algorithm>
 #include <atomic>
+#include <map>
 #include <csignal>
+#include <optional>
 
 #include <fmt/format.h>
 
 #include "core/errors.hpp"
+#include "core/thread_count.hpp"
 #include "experiment/run_folder.hpp"
+#include "experiment/run_identity.hpp"
+#include "experiment/run_log.hpp"
 #include "experiment/run_record.hpp"
 #include "experiment/run_recorder.hpp"
 #include "experiment/trapdoor_experiment.hpp"
@@ -26,11 +32,20 @@ namespace {
 std::atomic<int> g_signal{0};
 extern "C" void on_signal(int sig) { g_signal = sig; }
 
-// Snapshots written after the checkpoint would be written again by the resumed run: drop them.
-void drop_snapshots_after(const fs::path& h5, std::int64_t step) { truncate_snapshots(h5, step); }
+// A resume keeps the snapshots the checkpoint saw (`count`, its metadata) and drops the rest: a
+// snapshot written after the checkpoint, even at the checkpoint's own step (the first lowering
+// snapshot follows the stage-end checkpoint), is written again by the resumed run. Checkpoints of
+// an older version have no count: there the snapshots after the checkpoint's step go.
+void cut_snapshots_to_checkpoint(const fs::path& h5, std::optional<std::size_t> count, std::int64_t step) {
+  if (count) keep_snapshots(h5, *count);
+  else truncate_snapshots(h5, step);
+  // A resume of an earlier version rebuilt the file beside it; a kill then left this behind.
+  std::error_code ec;
+  fs::remove(h5.parent_path() / (".resume-" + fs::path(h5).replace_extension(".xmf").filename().string()), ec);
+}
 
 // The run's description at the top of run.log.
-void describe_run(RunRecorder& recorder, const ExperimentConfig& c, const fs::path& out) {
+void describe_run(RunLog& recorder, const ExperimentConfig& c, const fs::path& out) {
   recorder.say(fmt::format("trapdem run '{}': {}", c.name, c.description));
   recorder.say(fmt::format("  box {:.1f} x {:.1f} x {:.1f} mm ({}), trapdoor {:.1f} mm at x = {:.1f} mm, travel {:.1f} mm "
                            "at {:.4g} m/s", c.box.width * 1e3, c.box.depth * 1e3, c.box.height * 1e3,
@@ -48,24 +63,105 @@ void describe_run(RunRecorder& recorder, const ExperimentConfig& c, const fs::pa
   recorder.say(fmt::format("  output in {}", out.string()));
 }
 
-}  // namespace
+// The key of a --set assignment ("trapdoor.rate=0.02" -> "trapdoor.rate").
+std::string override_key(const std::string& assignment) {
+  std::string key = assignment.substr(0, assignment.find('='));
+  const auto first = key.find_first_not_of(" \t"), last = key.find_last_not_of(" \t");
+  return first == std::string::npos ? "" : key.substr(first, last - first + 1);
+}
 
-bool run_in_folder(const FolderRunOptions& o) {
-  const bool resume = !o.resume_dir.empty();
+bool allowed(const FolderRunOptions& o, const std::string& key) {
+  return std::find(o.allowed_changes.begin(), o.allowed_changes.end(), key) != o.allowed_changes.end();
+}
+
+// --resume takes the folder's configuration: no other file, and a --set only for a key named by
+// --allow-change.
+void check_resume_options(const FolderRunOptions& o) {
+  if (o.resume_dir.empty()) {
+    if (!o.allowed_changes.empty())
+      throw InputError(fmt::format("--allow-change {}: only with --resume DIR (a new run takes any --set)",
+                                   o.allowed_changes.front()));
+    return;
+  }
+  if (!o.config_file.empty())
+    throw InputError(fmt::format("--resume {} carries on the run with the folder's resolved.toml: give no configuration "
+                                 "file or --preset with it ({})", o.resume_dir.string(), o.config_file.string()));
+  for (const std::string& assignment : o.overrides)
+    if (!allowed(o, override_key(assignment)))
+      throw InputError(fmt::format("--set {}: --resume carries on the run that was started, with its configuration; to "
+                                   "change {} on purpose add --allow-change {} (the change is logged in run.log and "
+                                   "recorded in resolved.toml)",
+                                   assignment, override_key(assignment), override_key(assignment)));
+}
+
+// A resume's configuration against the one its checkpoint was taken with: a change of a key not
+// named by --allow-change is refused, naming the first; allowed changes are logged and recorded.
+void check_configuration(const FolderRunOptions& o, const std::map<std::string, std::string>& metadata,
+                         const std::string& now, const RunFolder& folder, const Config& config, RunLog& log,
+                         std::int64_t step) {
+  const auto stored = metadata.find(RunRecorder::kConfiguration);
+  if (stored == metadata.end()) {
+    log.say("note: the checkpoint was written by an older trapdem and holds no configuration; resolved.toml is taken "
+            "as it is");
+    return;
+  }
+  const auto digest = metadata.find(RunRecorder::kConfigurationDigest);
+  if (digest != metadata.end() && digest->second == config_digest(now)) return;  // the same run
+  const std::vector<ConfigChange> changes = config_changes(stored->second, now);
+  for (const ConfigChange& c : changes) {
+    if (allowed(o, c.key)) continue;
+    throw InputError(fmt::format(
+        "--resume {}: the configuration differs from the run that was started: {} was {} at the checkpoint, is {} now "
+        "({}); a resumed run must be the run that was started: restore the value, or add --allow-change {} to "
+        "change it on purpose", o.resume_dir.string(), c.key, c.before, c.after,
+        changes.size() > 1 ? fmt::format("and {} more key(s) differ", changes.size() - 1) : "the only difference",
+        c.key));
+  }
+  std::string record;
+  for (const ConfigChange& c : changes) {
+    log.say(fmt::format("changed on resume at step {} (--allow-change): {} = {} (was {})", step, c.key, c.after, c.before));
+    record += fmt::format("# changed on resume at step {} (--allow-change): {} = {} (was {})\n", step, c.key, c.after,
+                          c.before);
+  }
+  write_text_atomically(folder.resolved_toml(), record + config.resolved_toml());
+}
+
+// The run once its folder's log is open (`log` is emplaced as soon as the folder is known).
+bool run_logged(const FolderRunOptions& o, std::optional<RunLog>& log) {
+  check_resume_options(o);
+  bool resume = !o.resume_dir.empty();
   fs::path out;
+  bool restart = false;  // --resume of a folder stopped before its first checkpoint
   Config config = [&] {
     if (resume) {
       out = o.resume_dir;
       const RunFolder folder(out);
-      if (!folder.has_checkpoint())
-        throw InputError(fmt::format("--resume {}: no checkpoint.h5 there to resume from", out.string()));
+      if (!folder.has_checkpoint() && !fs::exists(folder.resolved_toml()))
+        throw InputError(fmt::format("--resume {}: neither checkpoint.h5 nor resolved.toml there: not a run folder",
+                                     out.string()));
+      log.emplace(folder.run_log(), o.quiet);
+      log->say(fmt::format("trapdem run --resume {}", out.string()));
+      restart = !folder.has_checkpoint();
       return Config::load_file(folder.resolved_toml().string());
     }
     return Config::load_file(o.config_file.string());
   }();
   config.apply_overrides(o.overrides);
   const ExperimentConfig experiment_config = ExperimentConfig::from(config);
-  if (!resume) {
+  const std::string configuration = resolved_values(config);
+  const int threads = o.threads > 0 ? o.threads : experiment_config.numerics.threads;
+  if (threads > 0) omp_set_num_threads(threads);
+  if (restart) {
+    // Killed before its first checkpoint (during it, or earlier): nothing to carry on, so the run
+    // starts again from the beginning in the same folder; what it wrote so far is written anew.
+    const RunFolder folder(out);
+    log->say(fmt::format("no checkpoint.h5 in {} (the run stopped before its first checkpoint was complete): starting "
+                         "it again from the beginning with its resolved.toml", out.string()));
+    for (const fs::path& p : {folder.snapshots_h5(), fs::path(folder.snapshots_h5()).replace_extension(".xmf"),
+                              folder.trapdoor_csv()})
+      fs::remove(p);
+    resume = false;
+  } else if (!resume) {
     out = o.out_dir.empty() ? fs::path("trapdem-out") / experiment_config.name : o.out_dir;
     const RunFolder folder(out);
     if (folder.has_checkpoint() || folder.has_snapshots())
@@ -74,27 +170,36 @@ bool run_in_folder(const FolderRunOptions& o) {
     std::error_code ec;
     fs::create_directories(out, ec);
     if (ec) throw FileError(fmt::format("cannot create the output folder {}: {}", out.string(), ec.message()));
-    write_text_atomically(folder.resolved_toml(), config.resolved_toml());
+    log.emplace(folder.run_log(), o.quiet);  // before anything else is written: the log from its first line
   }
   const RunFolder folder(out);
-
-  const int threads = o.threads > 0 ? o.threads : experiment_config.numerics.threads;
-  if (threads > 0) omp_set_num_threads(threads);
+  std::optional<Checkpoint> ckpt;
+  if (resume) {
+    ckpt = read_checkpoint(folder.checkpoint_h5());
+    check_configuration(o, ckpt->metadata, configuration, folder, config, *log, ckpt->stats.steps);
+    std::optional<std::size_t> count;
+    if (auto it = ckpt->metadata.find(RunRecorder::kSnapshotCount); it != ckpt->metadata.end())
+      count = std::stoul(it->second);
+    cut_snapshots_to_checkpoint(folder.snapshots_h5(), count, ckpt->stats.steps);
+  } else {
+    describe_run(*log, experiment_config, out);
+    std::string record;
+    for (const std::string& key : o.allowed_changes)
+      record += fmt::format("# --allow-change {} given at a restart from the beginning\n", key);
+    write_text_atomically(folder.resolved_toml(), record + config.resolved_toml());
+  }
 
   TrapdoorExperiment experiment(experiment_config);
-  RunRecorder recorder(experiment, folder, o.quiet, RunStopRules{&g_signal, o.stop_after_seconds, o.stop_at_step});
+  RunRecorder recorder(experiment, folder, *log, RunStopRules{&g_signal, o.stop_after_seconds, o.stop_at_step});
+  recorder.set_configuration(configuration);
   if (resume) {
-    Checkpoint ckpt = read_checkpoint(folder.checkpoint_h5());
-    const auto metadata = ckpt.metadata;
-    const std::int64_t step = ckpt.stats.steps;
-    restore_checkpoint(experiment.simulation(), std::move(ckpt));
+    const auto metadata = ckpt->metadata;
+    const std::int64_t step = ckpt->stats.steps;
+    restore_checkpoint(experiment.simulation(), std::move(*ckpt));
     experiment.restore(metadata);
-    drop_snapshots_after(folder.snapshots_h5(), step);
     write_text_atomically(folder.trapdoor_csv(), ground_reaction_csv(experiment.ground_reaction()));
     recorder.say(fmt::format("resumed {} at t = {:.6f} s (step {}, stage {})", out.string(),
                              experiment.simulation().time(), step, stage_name(experiment.stage())));
-  } else {
-    describe_run(recorder, experiment_config, out);
   }
 
   g_signal = 0;
@@ -126,6 +231,25 @@ bool run_in_folder(const FolderRunOptions& o) {
                                         sim.step_count() - start_steps, experiment.particle_steps_run(),
                                         sim.particles().size()});
   return complete;
+}
+
+}  // namespace
+
+bool run_in_folder(const FolderRunOptions& o) {
+  checked_thread_count(o.threads, "--threads");
+  std::optional<RunLog> log;
+  try {
+    return run_logged(o, log);
+  } catch (const std::exception& e) {
+    // The error that stops the run belongs in its log too (if the log itself failed, it cannot).
+    if (log) {
+      try {
+        log->note(fmt::format("stopped by an error: {}", e.what()));
+      } catch (const FileError&) {
+      }
+    }
+    throw;
+  }
 }
 
 }  // namespace trapdem

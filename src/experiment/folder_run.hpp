@@ -10,8 +10,9 @@
 namespace trapdem {
 
 struct FolderRunOptions {
-  std::filesystem::path config_file;    // the configuration (TOML) to run; unused with resume_dir
-  std::vector<std::string> overrides;   // "key.path=value", applied on top
+  std::filesystem::path config_file;    // the configuration (TOML) to run; must be empty with resume_dir
+  std::vector<std::string> overrides;   // "key.path=value", applied on top (with resume_dir: allowed_changes only)
+  std::vector<std::string> allowed_changes;  // with resume_dir: keys that may differ from the run started
   std::filesystem::path out_dir;        // empty: ./trapdem-out/<name>
   std::filesystem::path resume_dir;     // non-empty: carry on the run in this folder from its checkpoint
   int threads = 0;                      // 0: the configuration's numerics.threads, else all cores
@@ -23,6 +24,11 @@ struct FolderRunOptions {
 // Runs (or resumes) the experiment into its folder. Returns true if it finished, false if it
 // stopped on SIGINT/SIGTERM or a stop rule (its checkpoint written: resume it). Throws InputError,
 // SimulationError or FileError; refuses a folder that already holds a run unless resuming.
+// A resume is the run that was started: its configuration (the folder's resolved.toml with the
+// overrides) is compared with the one stored in the checkpoint, and a key that differs is refused
+// unless named in allowed_changes (then logged in run.log and recorded in resolved.toml). A folder
+// without checkpoint.h5 but with resolved.toml (stopped before its first checkpoint) is started
+// again from the beginning by a resume.
 bool run_in_folder(const FolderRunOptions& options);
 
 }  // namespace trapdem

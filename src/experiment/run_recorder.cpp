@@ -9,6 +9,7 @@
 #include "io/atomic_file.hpp"
 #include "io/checkpoint.hpp"
 #include "io/snapshot.hpp"
+#include "experiment/run_identity.hpp"
 
 namespace trapdem {
 
@@ -23,20 +24,10 @@ std::string format_duration(double s) {
   return fmt::format("{:.1f} h", s / 3600.0);
 }
 
-RunRecorder::RunRecorder(TrapdoorExperiment& experiment, RunFolder folder, bool quiet, RunStopRules stop)
-    : experiment_(experiment), folder_(std::move(folder)), quiet_(quiet), stop_(stop) {
-  log_.open(folder_.run_log(), std::ios::app);
-  if (!log_) throw FileError(fmt::format("cannot open {} for writing", folder_.run_log().string()));
+RunRecorder::RunRecorder(TrapdoorExperiment& experiment, RunFolder folder, RunLog& log, RunStopRules stop)
+    : experiment_(experiment), folder_(std::move(folder)), log_(log), stop_(stop) {
   started_ = last_checkpoint_ = now_seconds();
-}
-
-void RunRecorder::say(const std::string& line) {
-  if (!quiet_) {
-    fmt::print("{}\n", line);
-    std::fflush(stdout);
-  }
-  log_ << line << '\n';
-  log_.flush();
+  if (folder_.has_snapshots()) snapshots_ = list_snapshots(folder_.snapshots_h5()).size();
 }
 
 void RunRecorder::progress(const StageProgress& p) {
@@ -56,6 +47,7 @@ void RunRecorder::snapshot_due(const std::string& label) {
   const std::string name =
       append_snapshot(folder_.snapshots_h5(), make_snapshot(sim.particles(), sim.time(), label,
                                                             experiment_.trapdoor_displacement(), sim.step_count()));
+  ++snapshots_;
   say(fmt::format("snapshot {} ({}, trapdoor at {:.2f} mm, {} particles)", name, label,
                   experiment_.trapdoor_displacement() * 1e3, sim.particles().size()));
 }
@@ -72,12 +64,16 @@ bool RunRecorder::checkpoint_due() {
 void RunRecorder::checkpoint(const std::map<std::string, std::string>& state) {
   auto metadata = state;
   metadata["run.name"] = experiment_.config().name;
+  metadata[kSnapshotCount] = std::to_string(snapshots_);
+  if (!configuration_.empty()) {
+    metadata[kConfiguration] = configuration_;
+    metadata[kConfigurationDigest] = config_digest(configuration_);
+  }
   save_checkpoint(folder_.checkpoint_h5(), experiment_.simulation(), std::move(metadata));
   last_checkpoint_ = now_seconds();
   checkpoint_wanted_ = false;
-  log_ << fmt::format("checkpoint at t = {:.6f} s (step {}, stage {})\n", experiment_.simulation().time(),
-                      experiment_.simulation().step_count(), stage_name(experiment_.stage()));
-  log_.flush();
+  log_.note(fmt::format("checkpoint at t = {:.6f} s (step {}, stage {})", experiment_.simulation().time(),
+                        experiment_.simulation().step_count(), stage_name(experiment_.stage())));
 }
 
 bool RunRecorder::stop_requested() {

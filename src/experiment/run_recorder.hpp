@@ -5,12 +5,12 @@
 // signal, after a wall-clock budget or at a given step (tests).
 #include <atomic>
 #include <cstdint>
-#include <fstream>
 #include <map>
 #include <string>
 #include <vector>
 
 #include "experiment/run_folder.hpp"
+#include "experiment/run_log.hpp"
 #include "experiment/trapdoor_experiment.hpp"
 
 namespace trapdem {
@@ -23,11 +23,21 @@ struct RunStopRules {
 
 class RunRecorder : public ExperimentObserver {
  public:
-  // Opens the folder's run.log for appending; FileError if it cannot.
-  RunRecorder(TrapdoorExperiment& experiment, RunFolder folder, bool quiet, RunStopRules stop);
+  // Writes the run's lines to `log` (the folder's run.log, opened before the run by the caller).
+  RunRecorder(TrapdoorExperiment& experiment, RunFolder folder, RunLog& log, RunStopRules stop);
 
   // A line for run.log and, unless quiet, the terminal.
-  void say(const std::string& line);
+  void say(const std::string& line) { log_.say(line); }
+
+  // The run's resolved configuration (run_identity.hpp: resolved_values), stored with its digest in
+  // every checkpoint so that a resume can check it carries on the run that was started.
+  void set_configuration(std::string resolved_values) { configuration_ = std::move(resolved_values); }
+
+  // Checkpoint metadata: the snapshots in snapshots.h5 when it was taken (a resume keeps that many),
+  // the configuration and its digest.
+  static constexpr const char* kSnapshotCount = "run.snapshot_count";
+  static constexpr const char* kConfiguration = "run.resolved_toml";
+  static constexpr const char* kConfigurationDigest = "run.config_digest";
 
   void progress(const StageProgress& p) override;
   void stage_finished(Stage stage, const std::string& summary) override;
@@ -40,11 +50,12 @@ class RunRecorder : public ExperimentObserver {
  private:
   TrapdoorExperiment& experiment_;
   RunFolder folder_;
-  bool quiet_;
+  RunLog& log_;
   RunStopRules stop_;
-  std::ofstream log_;
   double started_ = 0.0, last_checkpoint_ = 0.0;
   bool checkpoint_wanted_ = false;
+  std::size_t snapshots_ = 0;       // in snapshots.h5
+  std::string configuration_;
   std::int64_t calls_ = 0, stop_calls_ = 0;
 };
 

@@ -25,6 +25,8 @@ struct Config::State {
   std::set<std::string> used;                           // full keys asked for (tables included)
   toml::table resolved;                                 // final values of the keys asked for
   std::map<std::string, std::string> units;             // full key -> unit, for comments
+  bool collecting = false;                              // collect_errors() called
+  std::vector<std::string> value_errors, rule_errors;   // recorded while collecting
 };
 
 namespace {
@@ -144,6 +146,134 @@ void insert_at(toml::table& root, std::string_view key, toml::node&& value) {
   std::move(value).visit([&](auto&& v) { table->insert_or_assign(parts.back(), std::move(v)); });
 }
 
+// Tables nested deeper than this are refused before toml++ sees the text: it builds (and frees)
+// nested tables recursively, and 50 000 levels of `[a.a.a...]` overflowed its stack (issue 14).
+// The deepest key of a real configuration is 3 levels (walls.front.static_friction); a study's
+// per-case settings add 3.
+constexpr int kMaxNesting = 64;
+
+// Skips a string starting at text[i] (a quote), basic or literal, single- or multi-line; returns the
+// index just past its end (or text.size()), counting the newlines it passes.
+std::size_t skip_string(std::string_view text, std::size_t i, int& line) {
+  const char quote = text[i];
+  const bool multi = text.substr(i, 3) == std::string(3, quote);
+  std::size_t j = i + (multi ? 3 : 1);
+  while (j < text.size()) {
+    const char c = text[j];
+    if (c == '\\' && quote == '"') {
+      j += 2;
+      continue;
+    }
+    if (c == '\n') {
+      ++line;
+      if (!multi) return j;  // unterminated: toml++ reports it
+    }
+    if (c == quote && (!multi || text.substr(j, 3) == std::string(3, quote))) return j + (multi ? 3 : 1);
+    ++j;
+  }
+  return j;
+}
+
+// A fast scan of the text for how deep its tables and values nest: a [header] counts its dotted
+// parts, a key its dotted parts below the header and the values that hold it, an array or inline
+// table one level more than what holds it. Strings and comments are skipped. Throws InputError
+// "<file>:<line>: ... nested N deep" at the first place deeper than kMaxNesting.
+void check_nesting(std::string_view text, const std::string& source) {
+  std::vector<int> open;     // per open [ or {: the levels it adds (its key's parts + 1)
+  std::vector<char> kind;    // '[' or '{'
+  int nested = 0;            // sum of `open`
+  int header = 0;            // parts of the current [header]
+  int line = 1;
+  bool key_mode = true;      // reading a key (line start, after '{' or ',' in an inline table)
+  int dots = 0;              // dots in the key read so far
+  int pending = 0;           // parts of the key whose value comes next
+  bool line_start = true;
+  auto fail = [&](int depth) {
+    throw InputError(fmt::format("{}:{}: tables and arrays nested {} levels deep: expected at most {} (a generated "
+                                 "or damaged file?)", source, line, depth, kMaxNesting));
+  };
+  for (std::size_t i = 0; i < text.size();) {
+    const char c = text[i];
+    if (c == '\n') {
+      ++line;
+      if (open.empty()) {
+        key_mode = true;
+        dots = 0;
+        line_start = true;
+      }
+      ++i;
+      continue;
+    }
+    if (c == ' ' || c == '\t' || c == '\r') {
+      ++i;
+      continue;
+    }
+    if (c == '#') {
+      while (i < text.size() && text[i] != '\n') ++i;
+      continue;
+    }
+    if (c == '"' || c == '\'') {
+      i = skip_string(text, i, line);
+      line_start = false;
+      continue;
+    }
+    if (line_start && open.empty() && c == '[') {  // a [header] or [[header]]: its dotted parts
+      int parts = 1;
+      while (i < text.size() && text[i] != '\n' && text[i] != ']') {
+        if (text[i] == '"' || text[i] == '\'') {
+          i = skip_string(text, i, line);
+          continue;
+        }
+        if (text[i] == '.') ++parts;
+        ++i;
+      }
+      header = parts;
+      if (header > kMaxNesting) fail(header);
+      while (i < text.size() && text[i] != '\n' && text[i] != '#') ++i;
+      line_start = false;
+      continue;
+    }
+    line_start = false;
+    if (key_mode) {
+      if (c == '.') ++dots;
+      if (c == '=') {
+        pending = dots + 1;
+        if (header + nested + pending > kMaxNesting) fail(header + nested + pending);
+        key_mode = false;
+        dots = 0;
+      } else if (c == '}' && !kind.empty() && kind.back() == '{') {  // an empty inline table
+        nested -= open.back();
+        open.pop_back();
+        kind.pop_back();
+        key_mode = false;
+      }
+      ++i;
+      continue;
+    }
+    if (c == '[' || c == '{') {
+      const int levels = std::max(pending, 0) + 1;
+      pending = 0;
+      open.push_back(levels);
+      kind.push_back(c);
+      nested += levels;
+      if (header + nested > kMaxNesting) fail(header + nested);
+      key_mode = c == '{';
+      dots = 0;
+    } else if ((c == ']' || c == '}') && !open.empty()) {
+      nested -= open.back();
+      open.pop_back();
+      kind.pop_back();
+    } else if (c == ',' && !kind.empty()) {
+      key_mode = kind.back() == '{';
+      dots = 0;
+      pending = 0;
+    } else {
+      pending = 0;
+    }
+    ++i;
+  }
+}
+
 }  // namespace
 
 // ---------------------------------------------------------------------------------------------
@@ -175,6 +305,7 @@ Config Config::load_file(const std::string& path) {
 Config Config::parse(std::string_view text, std::string source_name) {
   auto state = std::make_shared<State>();
   state->source = std::move(source_name);
+  check_nesting(text, state->source);
   try {
     state->document = toml::parse(text, state->source);
   } catch (const toml::parse_error& e) {
@@ -200,11 +331,17 @@ void Config::apply_override(std::string_view assignment) {
     if (!is_bare_key(part))
       throw InputError(fmt::format("{}: '{}' is not a key path (letters, digits, _ and - separated by dots)", origin, key));
 
+  if (parts.size() > std::size_t(kMaxNesting))
+    throw InputError(fmt::format("{}: a key {} levels deep: expected at most {}", origin, parts.size(), kMaxNesting));
+  const std::string value_text = "value = " + text;
   toml::table holder;
   try {
-    holder = toml::parse(std::string_view("value = " + text), std::string_view("--set"));
+    check_nesting(value_text, origin);
+    holder = toml::parse(std::string_view(value_text), std::string_view("--set"));
   } catch (const toml::parse_error&) {
     holder.insert_or_assign("value", text);  // not TOML: a bare word is meant as a string
+  } catch (const InputError&) {
+    holder.insert_or_assign("value", text);  // nested too deep to be a value of ours: a string, refused by its key
   }
   if (!holder.get("value") || holder.size() != 1) {  // "1\nx = 2" and the like
     holder = toml::table{};
@@ -285,6 +422,9 @@ double number_of(const Config::State& s, const std::string& key, const toml::nod
   if (auto f = node.as_floating_point()) x = f->get();
   else if (auto i = node.as_integer()) x = static_cast<double>(i->get());
   else wrong(s, key, node, expectation("a number", unit, range));
+  // TOML has inf and nan; no key of ours means either (an unbounded range included): refused here,
+  // once for every float key, rather than by each key's range.
+  if (!std::isfinite(x)) wrong(s, key, node, expectation("a finite number", unit, range));
   if (!range.contains(x)) wrong(s, key, node, expectation("a number", unit, range));
   return x;
 }
@@ -316,14 +456,36 @@ const char* element_name() {
   else return "strings";
 }
 
+// A look-up's reading: its value, or (while collecting errors) the fallback with the refusal
+// recorded. The key counts as used either way (it is a known key).
+template <class Read, class T>
+T guarded(Config::State& s, Read&& read, T fallback) {
+  if (!s.collecting) return read();
+  try {
+    return read();
+  } catch (const InputError& e) {
+    // Once: every look-up below a value that should be a table meets the same refusal (find()'s
+    // message then ends with the key looked up, " (it holds box.width)": compared without it).
+    const std::string_view message = e.what();
+    const std::string_view gist = message.substr(0, message.find(" (it holds "));
+    const bool seen = std::any_of(s.value_errors.begin(), s.value_errors.end(), [&](const std::string& m) {
+      return std::string_view(m).substr(0, m.find(" (it holds ")) == gist;
+    });
+    if (!seen) s.value_errors.emplace_back(message);
+    return fallback;
+  }
+}
+
 }  // namespace
 
 // ---------------------------------------------------------------------------------------------
 double Config::get_double(std::string_view key, double default_value, std::string_view unit, Range range) {
   const std::string k = full_key(key);
   state_->used.insert(k);  // even if the value is then refused: it is a known key
-  const toml::node* node = find(*state_, k);
-  const double x = node ? number_of(*state_, k, *node, unit, range) : default_value;
+  const double x = guarded(*state_, [&] {
+    const toml::node* node = find(*state_, k);
+    return node ? number_of(*state_, k, *node, unit, range) : default_value;
+  }, default_value);
   record(*state_, k, toml::value<double>(x), unit);
   return x;
 }
@@ -331,8 +493,10 @@ double Config::get_double(std::string_view key, double default_value, std::strin
 std::int64_t Config::get_int(std::string_view key, std::int64_t default_value, Range range) {
   const std::string k = full_key(key);
   state_->used.insert(k);  // even if the value is then refused: it is a known key
-  const toml::node* node = find(*state_, k);
-  const std::int64_t x = node ? integer_of(*state_, k, *node, range) : default_value;
+  const std::int64_t x = guarded(*state_, [&] {
+    const toml::node* node = find(*state_, k);
+    return node ? integer_of(*state_, k, *node, range) : default_value;
+  }, default_value);
   record(*state_, k, toml::value<std::int64_t>(x), {});
   return x;
 }
@@ -340,13 +504,13 @@ std::int64_t Config::get_int(std::string_view key, std::int64_t default_value, R
 bool Config::get_bool(std::string_view key, bool default_value) {
   const std::string k = full_key(key);
   state_->used.insert(k);  // even if the value is then refused: it is a known key
-  const toml::node* node = find(*state_, k);
-  bool x = default_value;
-  if (node) {
+  const bool x = guarded(*state_, [&] {
+    const toml::node* node = find(*state_, k);
+    if (!node) return default_value;
     auto b = node->as_boolean();
     if (!b) wrong(*state_, k, *node, "a boolean (true or false)");
-    x = b->get();
-  }
+    return b->get();
+  }, default_value);
   record(*state_, k, toml::value<bool>(x), {});
   return x;
 }
@@ -354,9 +518,10 @@ bool Config::get_bool(std::string_view key, bool default_value) {
 std::string Config::get_string(std::string_view key, std::string_view default_value) {
   const std::string k = full_key(key);
   state_->used.insert(k);  // even if the value is then refused: it is a known key
-  const toml::node* node = find(*state_, k);
-  std::string x(default_value);
-  if (node) x = element_of<std::string>(*state_, k, *node, {}, {});
+  const std::string x = guarded(*state_, [&] {
+    const toml::node* node = find(*state_, k);
+    return node ? element_of<std::string>(*state_, k, *node, {}, {}) : std::string(default_value);
+  }, std::string(default_value));
   record(*state_, k, toml::value<std::string>(x), {});
   return x;
 }
@@ -368,13 +533,13 @@ std::string Config::get_choice(std::string_view key, std::string_view default_va
   for (const std::string& c : choices) listed += (listed.empty() ? "" : ", ") + quoted(c);
   const std::string expected = "one of " + listed;
   state_->used.insert(k);  // even if the value is then refused: it is a known key
-  const toml::node* node = find(*state_, k);
-  std::string x(default_value);
-  if (node) {
+  const std::string x = guarded(*state_, [&] {
+    const toml::node* node = find(*state_, k);
+    if (!node) return std::string(default_value);
     auto str = node->as_string();
     if (!str || std::find(choices.begin(), choices.end(), str->get()) == choices.end()) wrong(*state_, k, *node, expected);
-    x = str->get();
-  }
+    return std::string(str->get());
+  }, std::string(default_value));
   record(*state_, k, toml::value<std::string>(x), {});
   return x;
 }
@@ -384,15 +549,16 @@ std::vector<T> Config::get_vector(std::string_view key, const std::vector<T>& de
                                   Range range) {
   const std::string k = full_key(key);
   state_->used.insert(k);  // even if the value is then refused: it is a known key
-  const toml::node* node = find(*state_, k);
-  std::vector<T> out = default_value;
-  if (node) {
+  const std::vector<T> out = guarded(*state_, [&] {
+    const toml::node* node = find(*state_, k);
+    if (!node) return default_value;
     auto array = node->as_array();
     if (!array) wrong(*state_, k, *node, fmt::format("an array of {}", element_name<T>()));
-    out.clear();
+    std::vector<T> values;
     for (std::size_t i = 0; i < array->size(); ++i)
-      out.push_back(element_of<T>(*state_, fmt::format("{}[{}]", k, i), *array->get(i), unit, range));
-  }
+      values.push_back(element_of<T>(*state_, fmt::format("{}[{}]", k, i), *array->get(i), unit, range));
+    return values;
+  }, default_value);
   toml::array resolved;
   for (const T& x : out) resolved.push_back(x);
   record(*state_, k, std::move(resolved), unit);
@@ -406,37 +572,49 @@ template std::vector<std::string> Config::get_vector(std::string_view, const std
                                                      std::string_view, Range);
 
 double Config::require_double(std::string_view key, std::string_view unit, Range range) {
-  if (!has(key)) missing(*state_, full_key(key), expectation("a number", unit, range));
-  return get_double(key, 0.0, unit, range);
+  return guarded(*state_, [&] {
+    if (!has(key)) missing(*state_, full_key(key), expectation("a number", unit, range));
+    return get_double(key, 0.0, unit, range);
+  }, 0.0);
 }
 
 std::int64_t Config::require_int(std::string_view key, Range range) {
-  if (!has(key)) missing(*state_, full_key(key), expectation("an integer", {}, range));
-  return get_int(key, 0, range);
+  return guarded(*state_, [&] {
+    if (!has(key)) missing(*state_, full_key(key), expectation("an integer", {}, range));
+    return get_int(key, 0, range);
+  }, std::int64_t{0});
 }
 
 bool Config::require_bool(std::string_view key) {
-  if (!has(key)) missing(*state_, full_key(key), "a boolean (true or false)");
-  return get_bool(key, false);
+  return guarded(*state_, [&] {
+    if (!has(key)) missing(*state_, full_key(key), "a boolean (true or false)");
+    return get_bool(key, false);
+  }, false);
 }
 
 std::string Config::require_string(std::string_view key) {
-  if (!has(key)) missing(*state_, full_key(key), "a string");
-  return get_string(key, "");
+  return guarded(*state_, [&] {
+    if (!has(key)) missing(*state_, full_key(key), "a string");
+    return get_string(key, "");
+  }, std::string());
 }
 
 template <class T>
 std::vector<T> Config::require_vector(std::string_view key, std::string_view unit, Range range) {
-  if (!has(key)) missing(*state_, full_key(key), expectation(fmt::format("an array of {}", element_name<T>()), unit, range));
-  return get_vector<T>(key, {}, unit, range);
+  return guarded(*state_, [&] {
+    if (!has(key))
+      missing(*state_, full_key(key), expectation(fmt::format("an array of {}", element_name<T>()), unit, range));
+    return get_vector<T>(key, {}, unit, range);
+  }, std::vector<T>{});
 }
 
 std::vector<std::vector<double>> Config::require_rows(std::string_view key, std::size_t columns,
                                                       std::string_view row_meaning) {
   const std::string k = full_key(key);
   const std::string expected = fmt::format("an array of rows, each [{}]", row_meaning);
-  if (!has(key)) missing(*state_, k, expected);
   state_->used.insert(k);
+  return guarded(*state_, [&] {
+  if (!has(key)) missing(*state_, k, expected);
   const toml::node* node = find(*state_, k);
   auto array = node->as_array();
   if (!array || array->empty()) wrong(*state_, k, *node, expected);
@@ -457,6 +635,7 @@ std::vector<std::vector<double>> Config::require_rows(std::string_view key, std:
   }
   record(*state_, k, std::move(resolved), {});
   return rows;
+  }, std::vector<std::vector<double>>{});
 }
 
 template std::vector<double> Config::require_vector(std::string_view, std::string_view, Range);
@@ -466,12 +645,17 @@ template std::vector<std::string> Config::require_vector(std::string_view, std::
 Config Config::get_table(std::string_view key) {
   const std::string k = full_key(key);
   state_->used.insert(k);  // even if the value is then refused: it is a known key
-  const toml::node* node = find(*state_, k);
-  if (node && !node->is_table()) wrong(*state_, k, *node, "a table");
+  guarded(*state_, [&] {
+    const toml::node* node = find(*state_, k);
+    if (node && !node->is_table()) wrong(*state_, k, *node, "a table");
+    return true;
+  }, false);
   return Config(state_, k + ".");
 }
 
-bool Config::has(std::string_view key) const { return find(*state_, full_key(key)) != nullptr; }
+bool Config::has(std::string_view key) const {
+  return guarded(*state_, [&] { return find(*state_, full_key(key)) != nullptr; }, false);
+}
 
 std::vector<std::string> Config::keys(std::string_view table_key) const {
   const toml::table* table = &state_->document;
@@ -526,6 +710,16 @@ InputError Config::error(std::string_view key, std::string_view expected) const 
   return InputError(fmt::format("{}: {}: expected {}", state_->source, k, expected));
 }
 
+void Config::collect_errors() { state_->collecting = true; }
+
+void Config::fail(std::string_view key, std::string_view expected) {
+  InputError e = error(key, expected);
+  if (!state_->collecting) throw e;
+  state_->rule_errors.emplace_back(e.what());
+}
+
+bool Config::has_errors() const { return !state_->value_errors.empty() || !state_->rule_errors.empty(); }
+
 // ---------------------------------------------------------------------------------------------
 namespace {
 
@@ -537,13 +731,28 @@ struct Unknown {
   const toml::node* node;
 };
 
-void collect_unused(const Config::State& s, const toml::table& table, const std::string& prefix,
-                    std::vector<Unknown>& out) {
-  for (const auto& [name, node] : table) {
-    const std::string key = prefix + std::string(name.str());
+// Depth first in the document's (name) order, with an explicit stack: the depth of user data does
+// not reach the call stack (check_nesting bounds it too).
+void collect_unused(const Config::State& s, const toml::table& root, std::vector<Unknown>& out) {
+  struct Level {
+    const toml::table* table;
+    toml::table::const_iterator next;
+    std::string prefix;
+  };
+  std::vector<Level> stack;
+  stack.push_back({&root, root.begin(), ""});
+  while (!stack.empty()) {
+    Level& level = stack.back();
+    if (level.next == level.table->end()) {
+      stack.pop_back();
+      continue;
+    }
+    const auto entry = level.next++;  // toml++'s iterator holds the pair it dereferences to: keep it
+    const auto& [name, node] = *entry;
+    const std::string key = level.prefix + std::string(name.str());
     if (key == kDerivedTable) continue;  // output of an earlier run (resolved.toml read again)
     if (const toml::table* sub = node.as_table(); sub && !sub->empty()) {
-      collect_unused(s, *sub, key + ".", out);
+      stack.push_back({sub, sub->begin(), key + "."});  // invalidates `level`
     } else if (!s.used.count(key)) {
       out.push_back({key, &node});
     }
@@ -574,23 +783,44 @@ std::string suggestion(const Config::State& s, const std::string& unknown) {
 
 std::vector<std::string> Config::unused_keys() const {
   std::vector<Unknown> unknown;
-  collect_unused(*state_, state_->document, "", unknown);
+  collect_unused(*state_, state_->document, unknown);
   std::vector<std::string> out;
   for (const Unknown& u : unknown) out.push_back(u.key);
   return out;
 }
 
-void Config::report_unused() const {
+namespace {
+
+// The unknown keys' part of a report ("" if none).
+std::string unknown_keys_message(const Config::State& s) {
   std::vector<Unknown> unknown;
-  collect_unused(*state_, state_->document, "", unknown);
-  if (unknown.empty()) return;
-  std::string message = fmt::format("{}: {} unknown key{} (misspelt, or not used by this program):", state_->source,
+  collect_unused(s, s.document, unknown);
+  if (unknown.empty()) return "";
+  std::string message = fmt::format("{}: {} unknown key{} (misspelt, or not used by this program):", s.source,
                                     unknown.size(), unknown.size() == 1 ? "" : "s");
   for (const Unknown& u : unknown) {
-    message += fmt::format("\n  {}: unknown key {}", location(*state_, u.key, u.node), u.key);
-    const std::string close = suggestion(*state_, u.key);
+    message += fmt::format("\n  {}: unknown key {}", location(s, u.key, u.node), u.key);
+    const std::string close = suggestion(s, u.key);
     if (!close.empty()) message += fmt::format(" (did you mean {}?)", close);
   }
+  return message;
+}
+
+}  // namespace
+
+void Config::report_unused() const {
+  const std::string message = unknown_keys_message(*state_);
+  if (!message.empty()) throw InputError(message);
+}
+
+void Config::throw_errors() const {
+  std::vector<std::string> parts;
+  if (std::string unknown = unknown_keys_message(*state_); !unknown.empty()) parts.push_back(std::move(unknown));
+  for (const auto* errors : {&state_->value_errors, &state_->rule_errors})
+    parts.insert(parts.end(), errors->begin(), errors->end());
+  if (parts.empty()) return;
+  std::string message = parts.front();
+  for (std::size_t i = 1; i < parts.size(); ++i) message += "\n" + parts[i];
   throw InputError(message);
 }
 

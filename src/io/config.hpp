@@ -99,6 +99,16 @@ class Config {
   // the critical one): "<file>:<line>:<col>: <full key> = <value>: expected <expected>".
   InputError error(std::string_view key, std::string_view expected) const;
 
+  // Errors together: after collect_errors(), a look-up whose value is refused (wrong type, out of
+  // range, missing) records its message and gives the default, and fail() records a rule
+  // violation, so that reading goes on and every key is seen. throw_errors() then reports them in
+  // one InputError: unknown keys first, then wrong values, then rule violations. Without
+  // collect_errors() (the default), look-ups and fail() throw at once.
+  void collect_errors();
+  void fail(std::string_view key, std::string_view expected);  // a rule violation (see error())
+  bool has_errors() const;  // a value or rule error recorded so far (unknown keys not counted)
+  void throw_errors() const;
+
   // Throws InputError listing every key of the document that no look-up asked for, each with its
   // file:line:column (and a close match among the known keys, if any). Call after reading all.
   void report_unused() const;

@@ -1,6 +1,8 @@
 #include "io/lammps_dump.hpp"
 
 #include <charconv>
+#include <cmath>
+#include <type_traits>
 #include <fstream>
 #include <sstream>
 #include <unordered_set>
@@ -42,6 +44,10 @@ class Reader {
     const auto [ptr, ec] = std::from_chars(word.data(), word.data() + word.size(), value);
     if (ec != std::errc() || ptr != word.data() + word.size()) {
       fail(line, std::string(what) + ": '" + std::string(word) + "' is not a number");
+    }
+    if constexpr (std::is_floating_point_v<T>) {
+      // from_chars reads "nan" and "inf": no coordinate, radius or bound of a dump means either.
+      if (!std::isfinite(value)) fail(line, std::string(what) + ": '" + std::string(word) + "' is not a finite number");
     }
     return value;
   }
@@ -144,6 +150,7 @@ Snapshot parse_dump(const std::string& text, const std::string& source) {
         for (int k = 0; k < 3; ++k) {
           double v = in.number<double>(w[static_cast<std::size_t>(cx[k])], l, "coordinate");
           if (scaled[k]) v = lo[k] + v * (hi[k] - lo[k]);
+          if (!std::isfinite(v)) in.fail(l, "the scaled coordinate maps to a non-finite position (check the box bounds)");
           *comp[k] = v;
         }
         const double r = in.number<double>(w[static_cast<std::size_t>(cr)], l, is_radius ? "radius" : "diameter");

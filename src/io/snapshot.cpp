@@ -159,13 +159,19 @@ std::string append_snapshot(const fs::path& h5_path, const Snapshot& s) {
 void truncate_snapshots(const fs::path& h5_path, std::int64_t last_step) {
   std::error_code ec;
   if (!fs::exists(h5_path, ec)) return;
+  const std::vector<SnapshotInfo> infos = list_snapshots(h5_path);
+  std::size_t keep = 0;
+  while (keep < infos.size() && infos[keep].step <= last_step) ++keep;
+  keep_snapshots(h5_path, keep);
+}
+
+void keep_snapshots(const fs::path& h5_path, std::size_t keep) {
+  std::error_code ec;
+  if (!fs::exists(h5_path, ec)) return;
+  const std::vector<SnapshotInfo> infos = list_snapshots(h5_path);
+  if (keep >= infos.size()) return;
   std::vector<std::string> dropped;
-  std::size_t kept = 0;
-  for (const SnapshotInfo& info : list_snapshots(h5_path)) {
-    if (info.step > last_step) dropped.push_back(info.name);
-    else ++kept;
-  }
-  if (dropped.empty()) return;
+  for (std::size_t k = keep; k < infos.size(); ++k) dropped.push_back(infos[k].name);
   std::vector<fs::path> orphans;  // the dropped snapshots' own files, removed once the index no longer names them
   write_atomically(h5_path, [&](const fs::path& temporary) {
     Hdf5File file = Hdf5File::open_in_memory(h5_path);
@@ -176,7 +182,7 @@ void truncate_snapshots(const fs::path& h5_path, std::int64_t last_step) {
     }
     file.write_image(temporary);
   });
-  if (kept == 0) {
+  if (keep == 0) {
     fs::remove(h5_path, ec);
     fs::remove(xdmf_path_of(h5_path), ec);
   } else {

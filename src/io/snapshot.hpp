@@ -62,6 +62,8 @@ std::string append_snapshot(const std::filesystem::path& h5_path, const Snapshot
 // index and the XDMF are rewritten without them, then their files are removed. No snapshot left:
 // the index and the XDMF are removed. Nothing to drop (or no index): nothing changes.
 void truncate_snapshots(const std::filesystem::path& h5_path, std::int64_t last_step);
+// The same by count: keeps the first `keep` snapshots of the index and drops the rest.
+void keep_snapshots(const std::filesystem::path& h5_path, std::size_t keep);
 
 // Reading (for the analysis; accepts files written by other tools that follow docs/output.md:
 // id, position and radius are required, velocity, angular_velocity and image default to zero,

@@ -5,13 +5,37 @@
 #include <numbers>
 #include <random>
 
+#include <fmt/format.h>
+
 #include "core/errors.hpp"
 
 namespace trapdem {
 
-std::vector<Speckle> make_speckle_pattern(const SpeckleSettings& s) {
+namespace {
+
+// The working image of a render is one double per pixel: at most 1 GiB (134 M px, e.g. 11 585 x
+// 11 585), estimated before anything is allocated instead of ending in std::bad_alloc.
+constexpr double kMaxWorkingBytes = 1024.0 * 1024.0 * 1024.0;
+
+void check_settings(const SpeckleSettings& s) {
   if (s.width <= 0 || s.height <= 0) throw InputError("speckle synthesis: the image size must be positive");
-  if (!(s.speckle_radius > 0.0)) throw InputError("speckle synthesis: the speckle radius must be positive");
+  const double bytes = double(s.width) * double(s.height) * double(sizeof(double));
+  if (bytes > kMaxWorkingBytes)
+    throw InputError(fmt::format("speckle synthesis: an image of {} x {} px needs {:.3g} bytes of working memory; "
+                                 "expected at most {:.0f} GiB ({:.3g} px)", s.width, s.height, bytes,
+                                 kMaxWorkingBytes / (1024.0 * 1024.0 * 1024.0), kMaxWorkingBytes / sizeof(double)));
+  if (!(s.speckle_radius > 0.0) || !std::isfinite(s.speckle_radius))
+    throw InputError("speckle synthesis: the speckle radius must be positive");
+  if (!(s.noise_std >= 0.0) || !std::isfinite(s.noise_std))
+    throw InputError(fmt::format("speckle synthesis: noise {} grey levels: expected a finite number >= 0", s.noise_std));
+  for (const double v : {s.coverage, s.margin, s.background, s.foreground})
+    if (!std::isfinite(v)) throw InputError("speckle synthesis: coverage, margin and grey levels must be finite numbers");
+}
+
+}  // namespace
+
+std::vector<Speckle> make_speckle_pattern(const SpeckleSettings& s) {
+  check_settings(s);
   if (s.bit_depth != 8 && s.bit_depth != 16) throw InputError("speckle synthesis: bit depth must be 8 or 16");
   const double x0 = -s.margin, x1 = s.width + s.margin, y0 = -s.margin, y1 = s.height + s.margin;
   const double area = (x1 - x0) * (y1 - y0);
@@ -29,11 +53,15 @@ std::vector<Speckle> make_speckle_pattern(const SpeckleSettings& s) {
 
 cv::Mat render_speckle_image(const std::vector<Speckle>& pattern, const DisplacementField& field,
                              const SpeckleSettings& s, std::uint64_t noise_seed) {
+  check_settings(s);
   cv::Mat sum = cv::Mat::zeros(s.height, s.width, CV_64F);
   constexpr double h = 0.5;  // px, step of the central differences for grad u
   for (const Speckle& sp : pattern) {
     const cv::Point2d X = sp.centre;
     const cv::Point2d centre = X + field(X);
+    if (!std::isfinite(centre.x) || !std::isfinite(centre.y))
+      throw InputError(fmt::format("speckle synthesis: the displacement field is not finite at ({:.1f}, {:.1f}) px "
+                                   "(check the magnitude)", X.x, X.y));
     // F = I + grad u by central differences; (F F^T)^-1 shapes the deformed Gaussian.
     const cv::Point2d du_dx = (field(X + cv::Point2d(h, 0)) - field(X - cv::Point2d(h, 0))) * (0.5 / h);
     const cv::Point2d du_dy = (field(X + cv::Point2d(0, h)) - field(X - cv::Point2d(0, h))) * (0.5 / h);

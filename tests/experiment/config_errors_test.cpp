@@ -41,7 +41,7 @@ const std::vector<BadConfig>& cases() {
        "diameter = -0.002\n"
        "[pluviation]\n"
        "count = 100\n",
-       2, "particles.diameter", "expected a number > 0 (m)"},
+       2, "particles.diameter", "expected a number in (0, 1] (m)"},
       {"NegativeUniformSize",
        "[particles]\n"
        "size = \"uniform\"\n"
@@ -49,7 +49,7 @@ const std::vector<BadConfig>& cases() {
        "max_diameter = 0.002\n"
        "[pluviation]\n"
        "count = 100\n",
-       3, "particles.min_diameter", "expected a number > 0 (m)"},
+       3, "particles.min_diameter", "expected a number in (0, 1] (m)"},
       {"MaxDiameterBelowMin",
        "[particles]\n"
        "size = \"uniform\"\n"
@@ -111,7 +111,7 @@ const std::vector<BadConfig>& cases() {
        "static_friction = -0.1\n"
        "[pluviation]\n"
        "count = 100\n",
-       2, "contact.static_friction", "expected a number >= 0"},
+       2, "contact.static_friction", "expected a number in [0, 10]"},
       {"TimeStepAboveCritical",
        // 2 mm glass, k_n = 1e6 N/m: sqrt(m/k) = 3.2e-6 s.
        "[contact]\n"
@@ -153,11 +153,11 @@ const std::vector<BadConfig>& cases() {
        "height = \"tall\"\n"
        "[pluviation]\n"
        "count = 100\n",
-       2, "box.height", "= \"tall\" (a string): expected a number > 0 (m)"},
+       2, "box.height", "= \"tall\" (a string): expected a number in (0, 10] (m)"},
       {"FloatForInteger",
        "[pluviation]\n"
        "count = 1.5e5\n",
-       2, "pluviation.count", "expected an integer >= 0"},
+       2, "pluviation.count", "expected an integer in [0, 100000000]"},
       {"NumberForTable",
        "box = 0.3\n"
        "[pluviation]\n"
@@ -235,7 +235,7 @@ const std::vector<BadConfig>& cases() {
        "count = 100\n"
        "[spin_up]\n"
        "g_level = 0.5\n",
-       4, "spin_up.g_level", "expected a number >= 1 (g)"},
+       4, "spin_up.g_level", "expected a number in [1, 1000] (g)"},
       // An override names itself instead of a file line.
       {"OverrideOutOfRange",
        "[pluviation]\n"

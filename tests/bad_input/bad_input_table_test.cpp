@@ -1,0 +1,265 @@
+// Issue 14, "always on": a table of bad inputs to every command of the `trapdem` binary, each row the
+// arguments (and the text of an input file, if the row needs one), the exit code expected and a
+// fragment of the message. The binary maps InputError to 2, FileError to 4 (apps/main.cpp), and
+// CLI11's own refusals to its codes (105 a value its check refuses, 106 a missing required option,
+// 109 an argument it does not know). Every row runs as a separate process in a folder of its own.
+//
+// Placeholders in the arguments: {IN} the row's input file (its text is the row's `input`), {TINY}
+// the tiny preset, {RUN} a tiny run stopped after 300 steps (checkpoint.h5, resolved.toml, run.log),
+// {DUMP0} {DUMP1} {DUMPNAN} LAMMPS dumps of a small bed (the last with a nan coordinate), {GEOM} a
+// geometry file for them, {IMG1} {IMG2} two speckle images, {EMPTY} an empty folder, {NOWHERE} a
+// path that does not exist.
+#include <gtest/gtest.h>
+#include <sys/wait.h>
+#include <unistd.h>
+
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
+#include <iterator>
+#include <map>
+#include <sstream>
+#include <string>
+#include <vector>
+
+#include <fmt/format.h>
+
+#include "experiment/folder_run.hpp"
+
+namespace trapdem {
+namespace {
+
+namespace fs = std::filesystem;
+
+struct BadInput {
+  const char* name;
+  const char* args;      // after `trapdem`, placeholders replaced
+  const char* input;     // text of {IN}, or nullptr
+  int exit_code;
+  const char* fragment;  // must appear in stdout + stderr
+};
+
+std::ostream& operator<<(std::ostream& os, const BadInput& b) { return os << b.name; }
+
+
+const std::vector<BadInput>& table() {
+  static const std::vector<BadInput> rows = {
+      // ---- run: files, syntax, keys
+      {"RunMissingFile", "run {NOWHERE}/x.toml", nullptr, 105, "File does not exist"},
+      {"RunSyntaxError", "run {IN}", "x = [1, 2\n", 2, "TOML syntax error"},
+      {"RunTypoAndMissingPourTogether", "run {IN}", "[box]\nwidht = 0.3\n", 2, "unknown key box.widht (did you mean box.width?)"},
+      {"RunTypoBeforeRule", "run {IN}", "[box]\nwidht = 0.3\n", 2, "a particle count or a fill_height"},
+      {"RunUnknownTable", "run {IN}", "[trapdor]\nwidth = 0.05\n[pluviation]\ncount = 100\n", 2, "unknown key trapdor.width"},
+      {"RunWrongType", "run {IN}", "[box]\nheight = \"tall\"\n[pluviation]\ncount = 100\n", 2, "box.height = \"tall\" (a string): expected a number"},
+      {"RunFloatForInteger", "run {TINY} --set pluviation.count=3e5", nullptr, 2, "pluviation.count = 300000.0 (a float): expected an integer"},
+      {"RunDeepNesting", "run {IN}", "DEEP", 2, "nested 100 levels deep: expected at most 64"},
+      {"RunHertzWallWithoutModulus", "run {IN}", "[pluviation]\ncount = 100\n[walls.base]\nnormal_model = \"hertz\"\n", 2, "youngs_modulus"},
+      {"RunEmptyFile", "run {IN}", "", 2, "a particle count or a fill_height"},
+      // ---- run: values not finite or not sane
+      {"RunInfRate", "run {TINY} --set trapdoor.rate=inf", nullptr, 2, "trapdoor.rate = inf (a float): expected a finite number"},
+      {"RunInfRampTime", "run {TINY} --set spin_up.ramp_time=inf", nullptr, 2, "spin_up.ramp_time = inf (a float): expected a finite number"},
+      {"RunInfSkin", "run {TINY} --set numerics.skin_fraction=inf", nullptr, 2, "numerics.skin_fraction = inf"},
+      {"RunNanDepth", "run {TINY} --set box.depth=nan", nullptr, 2, "box.depth = nan (a float): expected a finite number"},
+      {"RunInfGLevel", "run {TINY} --set spin_up.g_level=inf", nullptr, 2, "spin_up.g_level = inf"},
+      {"RunNegativeInfFriction", "run {TINY} --set contact.static_friction=-inf", nullptr, 2, "contact.static_friction = -inf"},
+      {"RunNanSnapshot", "run {TINY} --set output.snapshot_displacements=[0.0,nan]", nullptr, 2, "output.snapshot_displacements[1] = nan"},
+      {"RunHugeWidth", "run {TINY} --set box.width=1e300", nullptr, 2, "box.width = 1e+300 (a float): expected a number in (0, 10] (m)"},
+      {"RunHugeDensity", "run {TINY} --set particles.density=1e9", nullptr, 2, "expected a number in (0, 100000] (kg/m^3)"},
+      {"RunHugeCount", "run {TINY} --set pluviation.count=1000000000000", nullptr, 2, "expected an integer in [0, 100000000]"},
+      {"RunDenormalStiffness", "run {TINY} --set contact.normal_stiffness=1e-320", nullptr, 2, "contact.normal_stiffness = 1e-320 (a float): expected a value that gives a finite critical time step"},
+      {"RunTinyTimeStepFraction", "run {TINY} --set numerics.time_step_fraction=1e-300", nullptr, 2, "numerics.time_step_fraction = 1e-300 (a float): expected a time step of at least 1e-15 s"},
+      {"RunEndlessLowering", "run {TINY} --set trapdoor.rate=1e-9", nullptr, 2, "trapdoor.rate = 1e-09 (a float): expected a stage of at most 1e+11 time steps"},
+      {"RunTooManyRows", "run {TINY} --set output.ground_reaction_step=1e-12", nullptr, 2, "output.ground_reaction_step"},
+      {"RunZeroCheckpointInterval", "run {TINY} --set output.checkpoint_interval=0", nullptr, 2, "output.checkpoint_interval = 0 (an integer): expected a number in (0, 10000000] (s)"},
+      {"RunMinAboveMaxTime", "run {TINY} --set settling.min_time=1", nullptr, 2, "settling.min_time = 1 (an integer): expected at most max_time"},
+      {"RunTrapdoorWiderThanBox", "run {TINY} --set trapdoor.width=0.09", nullptr, 2, "expected a trapdoor narrower than the box"},
+      // ---- run: command line
+      {"RunThreadsText", "run {TINY} --threads abc", nullptr, 105, "--threads 'abc': expected 0 (all cores) or a thread count up to 4096"},
+      {"RunThreadsHuge", "run {TINY} --threads 100000", nullptr, 105, "--threads '100000': expected 0 (all cores) or a thread count up to 4096"},
+      {"RunThreadsOverflow", "run {TINY} --threads 99999999999999999999", nullptr, 105, "expected 0 (all cores) or a thread count up to 4096"},
+      {"RunThreadsInConfig", "run {TINY} --set numerics.threads=100000", nullptr, 2, "numerics.threads = 100000 (an integer): expected an integer in [0, 4096]"},
+      {"RunSetWithoutEquals", "run {TINY} --set trapdoor.rate", nullptr, 2, "--set trapdoor.rate: expected key.path=value"},
+      {"RunSetBadKey", "run {TINY} --set 'trap door.rate=1'", nullptr, 2, "is not a key path"},
+      {"RunSetDeepKey", "run {TINY} --set a.a.a.a.a.a.a.a.a.a.a.a.a.a.a.a.a.a.a.a.a.a.a.a.a.a.a.a.a.a.a.a.a.a.a.a.a.a.a.a.a.a.a.a.a.a.a.a.a.a.a.a.a.a.a.a.a.a.a.a.a.a.a.a.a.a=1", nullptr, 2, "levels deep: expected at most 64"},
+      {"RunUnknownPreset", "run --preset nosuch", nullptr, 2, "nosuch"},
+      {"RunConfigAndPreset", "run {TINY} --preset tiny", nullptr, 2, "give either a configuration file or --preset, not both"},
+      {"RunOccupiedFolder", "run {TINY} --out {RUN}", nullptr, 2, "already holds a run: resume it with --resume"},
+      {"RunUnknownOption", "run {TINY} --colour red", nullptr, 109, "--colour"},
+      // ---- run: resume
+      {"ResumeMissingFolder", "run --resume {NOWHERE}", nullptr, 105, "Directory does not exist"},
+      {"ResumeNotARunFolder", "run --resume {EMPTY}", nullptr, 2, "neither checkpoint.h5 nor resolved.toml there: not a run folder"},
+      {"ResumeWithSet", "run --resume {RUN} --set trapdoor.rate=0.2", nullptr, 2, "to change trapdoor.rate on purpose add --allow-change trapdoor.rate"},
+      {"ResumeWithConfig", "run {TINY} --resume {RUN}", nullptr, 2, "give no configuration file or --preset with it"},
+      {"ResumeWithPreset", "run --preset tiny --resume {RUN}", nullptr, 2, "give no configuration file or --preset with it"},
+      {"ResumeWithOut", "run --resume {RUN} --out {EMPTY}", nullptr, 2, "give no --out"},
+      {"AllowChangeWithoutResume", "run {TINY} --allow-change trapdoor.rate", nullptr, 2, "--allow-change trapdoor.rate: only with --resume"},
+      // ---- analyze
+      {"AnalyzeNoRunFolder", "analyze {EMPTY}", nullptr, 2, "resolved.toml: not found"},
+      {"AnalyzeDumpCountMismatch", "analyze {EMPTY} --dumps {DUMP0} {DUMP1} --displacements 0mm --config {GEOM} --no-figures", nullptr, 2, "2 dump files but 1 displacements"},
+      {"AnalyzeGridTooFine", "analyze {EMPTY} --dumps {DUMP0} {DUMP1} --displacements 0mm,1mm --config {GEOM} --no-figures --quiet --grid 1e-9", nullptr, 2, "bytes per field; expected at most 1 GiB per field"},
+      {"AnalyzeGridText", "analyze {EMPTY} --dumps {DUMP0} {DUMP1} --displacements 0mm,1mm --config {GEOM} --no-figures --quiet --grid abc", nullptr, 2, "'abc'"},
+      {"AnalyzeNanInDump", "analyze {EMPTY} --dumps {DUMP0} {DUMPNAN} --displacements 0mm,1mm --config {GEOM} --no-figures --quiet", nullptr, 2, "coordinate: 'nan' is not a finite number"},
+      {"AnalyzeDumpMissingFile", "analyze {EMPTY} --dumps {DUMP0} {NOWHERE}/x.dump --displacements 0mm,1mm --config {GEOM} --no-figures", nullptr, 4, "x.dump"},
+      {"AnalyzeSmoothingText", "analyze {RUN} --smoothing abc", nullptr, 105, "--smoothing: 'abc': expected a number >= 0 and <= 100 mean diameters"},
+      {"AnalyzeSmoothingInf", "analyze {RUN} --smoothing inf", nullptr, 105, "expected a number >= 0 and <= 100"},
+      {"AnalyzeBadView", "analyze {RUN} --view sideways", nullptr, 105, "sideways"},
+      {"AnalyzeRunWithoutSnapshots", "analyze {RUN}", nullptr, 2, "snapshots.h5"},
+      // ---- compare
+      {"CompareMissingAt", "compare {RUN} {EMPTY}", nullptr, 106, "--at is required"},
+      {"CompareRunWithoutSnapshots", "compare {RUN} {EMPTY} --at 10mm", nullptr, 2, "snapshots.h5: not found (run `trapdem run` first)"},
+      {"CompareNoDemFolder", "compare {NOWHERE} {EMPTY} --at 10mm", nullptr, 2, "nowhere"},
+      {"CompareUnknownOption", "compare {RUN} {EMPTY} --at 10mm --colour red", nullptr, 109, "--colour"},
+      // ---- piv and synth
+      {"PivOneImage", "piv {IMG1} --out {EMPTY}/p", nullptr, 2, "give at least two images"},
+      {"PivEmptyRoi", "piv {IMG1} {IMG2} --out {EMPTY}/p --roi 40,10,40,70 --quiet --no-figures", nullptr, 2, "--roi"},
+      {"PivMissingImage", "piv {IMG1} {NOWHERE}/b.png --out {EMPTY}/p --quiet", nullptr, 2, "b.png': no such file"},
+      {"PivNotAnImage", "piv {IMG1} {IN} --out {EMPTY}/p --quiet", "not an image\n", 2, "in.txt': not an image format OpenCV can read"},
+      {"PivThreadsHuge", "piv {IMG1} {IMG2} --out {EMPTY}/p --threads 100000", nullptr, 105, "expected 0 (all cores) or a thread count up to 4096"},
+      {"SynthHugeImage", "synth --out {EMPTY}/s --size 200000x200000", nullptr, 2, "needs 3.2e+11 bytes of working memory; expected at most 1 GiB"},
+      {"SynthNanNoise", "synth --out {EMPTY}/s --size 64x64 --noise nan", nullptr, 2, "noise nan grey levels: expected a finite number >= 0"},
+      {"SynthBadSize", "synth --out {EMPTY}/s --size abc", nullptr, 2, "--size 'abc': expected WIDTHxHEIGHT"},
+      {"SynthOneImage", "synth --out {EMPTY}/s --images 1", nullptr, 2, "at least 2"},
+      {"SynthNanMagnitude", "synth --out {EMPTY}/s --size 64x64 --magnitude nan", nullptr, 2, "not finite"},
+      // ---- sinkhole
+      {"SinkholeInfiniteDiameter", "sinkhole --throat 2 --layer 1e308:89.99", nullptr, 2, "(D_s = inf m); expected a thickness in metres that gives a finite D_s"},
+      {"SinkholeAngle90", "sinkhole --throat 2 --layer 12:90", nullptr, 2, "outside [0, 90)"},
+      {"SinkholeNoAngle", "sinkhole --throat 2 --layer 12", nullptr, 2, "expected THICKNESS:ANGLE_OF_DRAW"},
+      {"SinkholeNegativeThroat", "sinkhole --throat -1 --layer 12:30", nullptr, 2, "--throat"},
+      {"SinkholeNanThroat", "sinkhole --throat nan --layer 12:30", nullptr, 2, "--throat"},
+      {"SinkholeNanThickness", "sinkhole --throat 2 --layer nan:30", nullptr, 2, "not a number"},
+      {"SinkholeNanAngle", "sinkhole --throat 2 --layer 12:nan", nullptr, 2, "the angle of draw 'nan' is not a number"},
+      {"SinkholeNoLayer", "sinkhole --throat 2", nullptr, 2, "layer"},
+      {"SinkholeFromNowhere", "sinkhole --from {NOWHERE} --layer :30", nullptr, 2, "nowhere: not a folder"},
+      // ---- study
+      {"StudyMissingFile", "study {NOWHERE}/s.toml", nullptr, 105, "File does not exist"},
+      {"StudySyntaxError", "study {IN}", "name = \n", 2, "TOML syntax error"},
+      {"StudyDeepNesting", "study {IN}", "DEEP", 2, "nested 100 levels deep: expected at most 64"},
+      {"StudyNoScales", "study {IN} --out {EMPTY}/st", "name = \"s\"\n", 2, "scales: expected a table of scales"},
+      {"StudyUnknownKey", "study {IN} --out {EMPTY}/st",
+       "name = \"s\"\ncolour = 1\n[scales.demo]\npreset = \"tiny\"\n[cases.a]\nlabel = \"A\"\n", 2, "unknown key colour"},
+      {"StudyThreadsText", "study {IN} --threads abc", "name = \"s\"\n", 105, "expected 0 (all cores) or a thread count up to 4096"},
+      // ---- calibrate
+      {"CalibrateMissingVary", "calibrate {TINY} --target {EMPTY} --at 10mm", nullptr, 106, "--vary is required"},
+      {"CalibrateNoTarget", "calibrate {TINY} --vary trapdoor.rate=0.1,0.2 --target {EMPTY} --at 10mm --out {EMPTY}/c", nullptr, 2, "piv.h5"},
+      {"CalibrateBadVary", "calibrate {TINY} --vary trapdoor.rate --target {EMPTY} --at 10mm --out {EMPTY}/c", nullptr, 2, "trapdoor.rate"},
+      {"CalibrateThreadsHuge", "calibrate {TINY} --vary trapdoor.rate=0.1 --target {EMPTY} --at 10mm --threads 100000", nullptr, 105, "expected 0 (all cores) or a thread count up to 4096"},
+      // ---- element
+      {"ElementTooFewParticles", "element --preset tiny --set element.particles=10 --out {EMPTY}/e", nullptr, 2, "element.particles = 10 (an integer): expected an integer in [50, 1000000]"},
+      {"ElementHugeSpecimen", "element --preset tiny --set element.particles=1000000000 --out {EMPTY}/e", nullptr, 2, "expected an integer in [50, 1000000]"},
+      {"ElementHugeConfining", "element --preset tiny --confining 1e300 --out {EMPTY}/e", nullptr, 2, "element.confining[0] = 1e+300 (a float): expected a number in (0, 1000000000] (Pa)"},
+      {"ElementInfInertialNumber", "element --preset tiny --set element.inertial_number=inf --out {EMPTY}/e", nullptr, 2, "element.inertial_number = inf (a float): expected a finite number"},
+      {"ElementBadTest", "element --preset tiny --test shear", nullptr, 105, "shear"},
+      {"ElementThreadsText", "element --preset tiny --threads abc", nullptr, 105, "expected 0 (all cores) or a thread count up to 4096"},
+      {"ElementDeepNesting", "element {IN}", "DEEP", 2, "nested 100 levels deep: expected at most 64"},
+      {"ElementNoParticles", "element {IN} --out {EMPTY}/e", "[box]\nwidth = 0.3\n", 2, "no [particles] table"},
+      {"ElementTypoInRunKeys", "element {IN} --out {EMPTY}/e", "[particles]\ndiameter = 0.002\n[contact]\nrestitution = 0.5\nstatic_frction = 0.3\n", 2, "unknown key contact.static_frction"},
+  };
+  return rows;
+}
+
+class BadInputTable : public ::testing::TestWithParam<BadInput> {
+ protected:
+  static fs::path root_;
+  static std::map<std::string, std::string> places_;
+
+  static void SetUpTestSuite() {
+    root_ = fs::temp_directory_path() / fmt::format("trapdem-bad-input-{}", ::getpid());
+    fs::remove_all(root_);
+    fs::create_directories(root_ / "empty");
+    places_["{TINY}"] = (fs::path(TRAPDEM_SOURCE_DIR) / "presets" / "tiny.toml").string();
+    places_["{EMPTY}"] = (root_ / "empty").string();
+    places_["{NOWHERE}"] = (root_ / "nowhere").string();
+    // A small bed as two LAMMPS dumps: 20 x 10 spheres of 4 mm near the front window, the second
+    // settled up to 1 mm above the trapdoor.
+    auto dump = [&](const std::string& name, double settlement, bool nan) {
+      std::ostringstream atoms;
+      int id = 0;
+      for (int ix = 0; ix < 20; ++ix)
+        for (int iz = 0; iz < 10; ++iz) {
+          const double x = 0.002 + 0.004 * ix, z = 0.002 + 0.004 * iz;
+          const double dz = -settlement * std::max(0.0, 1.0 - std::abs(x - 0.04) / 0.01);
+          ++id;
+          if (nan && id == 7) atoms << id << " nan 0.012 " << z << " 0.002\n";
+          else atoms << id << ' ' << x << " 0.012 " << z + dz << " 0.002\n";
+        }
+      const fs::path path = root_ / name;
+      std::ofstream(path) << "ITEM: TIMESTEP\n0\nITEM: NUMBER OF ATOMS\n200\nITEM: BOX BOUNDS ff ff ff\n0 0.08\n0 0.014\n"
+                             "0 0.045\nITEM: ATOMS id x y z radius\n"
+                          << atoms.str();
+      return path.string();
+    };
+    places_["{DUMP0}"] = dump("d0.dump", 0.0, false);
+    places_["{DUMP1}"] = dump("d1.dump", 0.001, false);
+    places_["{DUMPNAN}"] = dump("dnan.dump", 0.001, true);
+    std::ofstream(root_ / "geom.toml") << "[box]\nwidth = 0.08\ndepth = 0.014\nheight = 0.045\n[trapdoor]\nwidth = 0.016\n"
+                                          "travel = 0.004\n";
+    places_["{GEOM}"] = (root_ / "geom.toml").string();
+    // A run stopped after 300 steps (of the pour): what a resume needs.
+    FolderRunOptions run;
+    run.config_file = places_["{TINY}"];
+    run.out_dir = root_ / "run";
+    run.quiet = true;
+    run.threads = 1;
+    run.stop_at_step = 300;
+    run_in_folder(run);
+    places_["{RUN}"] = run.out_dir.string();
+    // Two speckle images.
+    const std::string synth = fmt::format("'{}' synth --out '{}' --size 64x64 > /dev/null", TRAPDEM_EXECUTABLE,
+                                          (root_ / "img").string());
+    if (std::system(synth.c_str()) != 0) throw std::runtime_error("synth failed: " + synth);
+    places_["{IMG1}"] = (root_ / "img" / "image_001.png").string();
+    places_["{IMG2}"] = (root_ / "img" / "image_002.png").string();
+  }
+  static void TearDownTestSuite() { fs::remove_all(root_); }
+};
+
+fs::path BadInputTable::root_;
+std::map<std::string, std::string> BadInputTable::places_;
+
+std::string deep_toml() {
+  std::string key = "a";
+  for (int i = 1; i < 100; ++i) key += ".a";
+  return "[" + key + "]\nx = 1\n";
+}
+
+TEST_P(BadInputTable, ExitCodeAndMessage) {
+  const BadInput& row = GetParam();
+  const fs::path dir = root_ / "rows" / row.name;
+  fs::create_directories(dir);
+  std::map<std::string, std::string> places = places_;
+  places["{IN}"] = (dir / "in.txt").string();
+  if (row.input) std::ofstream(dir / "in.txt") << (std::string(row.input) == "DEEP" ? deep_toml() : row.input);
+  std::string args = row.args;
+  for (const auto& [name, value] : places)
+    for (std::size_t at = args.find(name); at != std::string::npos; at = args.find(name, at + value.size()))
+      args.replace(at, name.size(), value);
+  // Every row fails within a second; a row that hangs (inf passed on as a stage length once did)
+  // is stopped after 60 s and fails with exit code 124.
+  const std::string command =
+      fmt::format("cd '{}' && timeout 60 '{}' {} > out.txt 2> err.txt", dir.string(), TRAPDEM_EXECUTABLE, args);
+  const int status = std::system(command.c_str());
+  auto read = [](const fs::path& p) {
+    std::ifstream in(p);
+    return std::string(std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>());
+  };
+  const std::string said = read(dir / "out.txt") + read(dir / "err.txt");
+  SCOPED_TRACE("trapdem " + args + "\n" + said.substr(0, 1500));
+  ASSERT_TRUE(WIFEXITED(status)) << "killed by a signal";
+  EXPECT_EQ(WEXITSTATUS(status), row.exit_code);
+  EXPECT_NE(said.find(row.fragment), std::string::npos) << "expected the message to say: " << row.fragment;
+}
+
+INSTANTIATE_TEST_SUITE_P(Rows, BadInputTable, ::testing::ValuesIn(table()),
+                         [](const ::testing::TestParamInfo<BadInput>& info) { return std::string(info.param.name); });
+
+TEST(BadInputTableSize, AtLeastSixtyRowsCoveringEveryCommand) {
+  EXPECT_GE(table().size(), 60u);
+  for (const char* command : {"run", "analyze", "compare", "piv", "synth", "sinkhole", "study", "calibrate", "element"}) {
+    int rows = 0;
+    for (const BadInput& b : table()) rows += std::string(b.args).rfind(std::string(command) + " ", 0) == 0;
+    EXPECT_GE(rows, 3) << command;
+  }
+}
+
+}  // namespace
+}  // namespace trapdem

@@ -1,0 +1,181 @@
+// Issue 14, "resume": a resumed run is the run that was started. The checkpoint stores the whole
+// resolved configuration; a resume that would run another one (an edited resolved.toml, a --set,
+// another file) is refused naming the first differing key unless --allow-change names it. A kill
+// right after the stage-end checkpoint no longer duplicates the lowering's first snapshot; a folder
+// stopped before its first checkpoint restarts with --resume; checkpoints are taken inside a stage.
+#include <gtest/gtest.h>
+
+#include <filesystem>
+#include <fstream>
+#include <regex>
+#include <string>
+#include <vector>
+
+#include "../io/io_test_support.hpp"
+#include "core/errors.hpp"
+#include "experiment/folder_run.hpp"
+#include "experiment/run_recorder.hpp"
+#include "io/checkpoint.hpp"
+#include "io/snapshot.hpp"
+
+namespace trapdem {
+namespace {
+
+namespace fs = std::filesystem;
+using io_testing::read_all;
+using io_testing::ScratchDir;
+
+const fs::path kTiny = fs::path(TRAPDEM_SOURCE_DIR) / "presets" / "tiny.toml";
+
+// The tiny preset made smaller still: ~240 particles, every stage short (about 68 000 steps).
+const std::vector<std::string> kSmall = {
+    "pluviation.fill_height=0.012", "pluviation.drop_height=0.01", "settling.max_time=0.01",
+    "settling.min_time=0.002",      "spin_up.ramp_time=0.004",      "trapdoor.travel=0.0012",
+    "output.snapshot_displacements=[0.0, 0.001]"};
+
+FolderRunOptions fresh(const fs::path& out, std::int64_t stop_at_step = 0) {
+  FolderRunOptions o;
+  o.config_file = kTiny;
+  o.overrides = kSmall;
+  o.out_dir = out;
+  o.quiet = true;
+  o.threads = 1;  // bitwise repeatable
+  o.stop_at_step = stop_at_step;
+  return o;
+}
+
+FolderRunOptions resume(const fs::path& dir, std::int64_t stop_at_step = 0) {
+  FolderRunOptions o;
+  o.resume_dir = dir;
+  o.quiet = true;
+  o.threads = 1;
+  o.stop_at_step = stop_at_step;
+  return o;
+}
+
+std::string refusal(const FolderRunOptions& o) {
+  try {
+    run_in_folder(o);
+  } catch (const InputError& e) {
+    return e.what();
+  }
+  return "";
+}
+
+TEST(ResumeIdentity, AChangedConfigurationIsRefusedUnlessAllowed) {
+  ScratchDir dir;
+  const fs::path run = dir / "run";
+  ASSERT_FALSE(run_in_folder(fresh(run, 300)));
+
+  FolderRunOptions with_set = resume(run, 400);
+  with_set.overrides = {"trapdoor.rate=0.2"};
+  std::string m = refusal(with_set);
+  EXPECT_NE(m.find("--allow-change trapdoor.rate"), std::string::npos) << m;
+
+  FolderRunOptions with_file = resume(run, 400);
+  with_file.config_file = kTiny;
+  m = refusal(with_file);
+  EXPECT_NE(m.find("give no configuration file or --preset"), std::string::npos) << m;
+
+  FolderRunOptions not_resuming = fresh(dir / "other", 400);
+  not_resuming.allowed_changes = {"trapdoor.rate"};
+  EXPECT_NE(refusal(not_resuming).find("only with --resume"), std::string::npos);
+
+  // resolved.toml edited after the run started.
+  const std::string resolved = read_all(run / "resolved.toml");
+  std::string edited = resolved;
+  ASSERT_NE(edited.find("\nrate = 0.1 "), std::string::npos) << resolved;
+  edited.replace(edited.find("\nrate = 0.1 "), 11, "\nrate = 0.2 ");
+  std::ofstream(run / "resolved.toml") << edited;
+  m = refusal(resume(run, 400));
+  EXPECT_NE(m.find("trapdoor.rate was 0.1 at the checkpoint, is 0.2 now"), std::string::npos) << m;
+  EXPECT_NE(m.find("--allow-change trapdoor.rate"), std::string::npos) << m;
+  EXPECT_EQ(read_checkpoint(run / "checkpoint.h5").stats.steps, 300);  // nothing ran
+
+  // Allowed: it runs, and the change is in run.log, resolved.toml and the next checkpoint.
+  FolderRunOptions allowed = resume(run, 400);
+  allowed.allowed_changes = {"trapdoor.rate"};
+  EXPECT_FALSE(run_in_folder(allowed));
+  EXPECT_NE(read_all(run / "run.log").find("changed on resume at step 300 (--allow-change): trapdoor.rate = 0.2 (was "
+                                           "0.1)"),
+            std::string::npos);
+  EXPECT_EQ(read_all(run / "resolved.toml").rfind("# changed on resume at step 300 (--allow-change): trapdoor.rate", 0),
+            0u);
+  const Checkpoint c = read_checkpoint(run / "checkpoint.h5");
+  EXPECT_EQ(c.stats.steps, 400);
+  EXPECT_NE(c.metadata.at(RunRecorder::kConfiguration).find("\nrate = 0.2"), std::string::npos);
+  // The same configuration resumes without a word.
+  EXPECT_FALSE(run_in_folder(resume(run, 500)));
+}
+
+// The kill of issue 14: the stage-end checkpoint at the end of spin-up (step N), then the lowering's
+// first snapshot at the same step N, then a kill before the next checkpoint. The resume must not
+// write that snapshot a second time, and ends as a run that went straight through.
+TEST(ResumeIdentity, AKillAfterTheStageEndCheckpointDuplicatesNoSnapshot) {
+  ScratchDir dir;
+  const fs::path straight = dir / "straight";
+  ASSERT_TRUE(run_in_folder(fresh(straight)));
+  const auto expected = list_snapshots(straight / "snapshots.h5");
+  ASSERT_EQ(expected.size(), 5u);
+  ASSERT_EQ(expected[2].stage, "lowering");
+  const std::int64_t n = expected[2].step;  // the lowering starts: checkpoint, then this snapshot
+
+  const fs::path killed = dir / "killed";
+  ASSERT_FALSE(run_in_folder(fresh(killed, n)));
+  EXPECT_EQ(read_checkpoint(killed / "checkpoint.h5").stats.steps, n);
+  fs::copy_file(killed / "checkpoint.h5", dir / "checkpoint-at-n.h5");
+  ASSERT_FALSE(run_in_folder(resume(killed, n + 300)));  // writes the snapshot at n, a checkpoint at n + 300
+  ASSERT_EQ(list_snapshots(killed / "snapshots.h5").size(), 3u);
+  fs::copy_file(dir / "checkpoint-at-n.h5", killed / "checkpoint.h5", fs::copy_options::overwrite_existing);
+
+  ASSERT_TRUE(run_in_folder(resume(killed)));
+  const auto got = list_snapshots(killed / "snapshots.h5");
+  ASSERT_EQ(got.size(), expected.size());
+  for (std::size_t i = 0; i < got.size(); ++i) {
+    EXPECT_EQ(got[i].step, expected[i].step) << i;
+    EXPECT_EQ(got[i].stage, expected[i].stage) << i;
+  }
+  EXPECT_EQ(read_all(killed / "trapdoor.csv"), read_all(straight / "trapdoor.csv"));
+  // The XDMF companion names the file that exists; no file of the rewrite is left.
+  EXPECT_FALSE(fs::exists(killed / ".resume-snapshots.xmf"));
+  EXPECT_FALSE(fs::exists(killed / ".resume-snapshots.h5"));
+  const std::string xmf = read_all(killed / "snapshots.xmf");
+  EXPECT_EQ(xmf.find(".resume-"), std::string::npos);
+  EXPECT_NE(xmf.find("snapshots.h5:"), std::string::npos);
+}
+
+TEST(ResumeIdentity, AFolderWithoutACheckpointRestartsFromTheBeginning) {
+  ScratchDir dir;
+  const fs::path run = dir / "run";
+  ASSERT_FALSE(run_in_folder(fresh(run, 300)));
+  fs::remove(run / "checkpoint.h5");  // killed while writing its first checkpoint
+  std::ofstream(run / ".checkpoint.h5.tmp-1-1") << "partial";
+  // --resume is the one command for such a folder (a fresh run into it would mix two logs).
+  EXPECT_FALSE(run_in_folder(resume(run, 300)));
+  EXPECT_EQ(read_checkpoint(run / "checkpoint.h5").stats.steps, 300);
+  EXPECT_NE(read_all(run / "run.log").find("starting it again from the beginning"), std::string::npos);
+  // A folder with neither is no run folder.
+  fs::create_directories(dir / "empty");
+  EXPECT_NE(refusal(resume(dir / "empty")).find("not a run folder"), std::string::npos);
+}
+
+// With a short interval, checkpoints come every 256 steps inside a stage (the pour here), not only
+// at stage ends: a kill loses at most one interval (and those 256 steps).
+TEST(ResumeIdentity, CheckpointsAreTakenInsideALongStage) {
+  ScratchDir dir;
+  FolderRunOptions o = fresh(dir / "run", 4000);
+  o.overrides.push_back("output.checkpoint_interval=1e-9");
+  ASSERT_FALSE(run_in_folder(o));
+  const std::string log = read_all(dir / "run" / "run.log");
+  const std::regex line(R"(checkpoint at t = [0-9.]+ s \(step ([0-9]+), stage pluviation\))");
+  std::vector<long> steps;
+  for (auto it = std::sregex_iterator(log.begin(), log.end(), line); it != std::sregex_iterator(); ++it)
+    steps.push_back(std::stol((*it)[1]));
+  ASSERT_GE(steps.size(), 15u) << log;
+  EXPECT_LE(steps.front(), 256);
+  for (std::size_t i = 1; i < steps.size(); ++i) EXPECT_LE(steps[i] - steps[i - 1], 256) << i;
+  EXPECT_EQ(steps.back(), 4000);  // the stop's own
+}
+
+}  // namespace
+}  // namespace trapdem
