@@ -114,7 +114,8 @@ void SlabDecomposition::rebalance(const Particles& p) {
   std::vector<double> x(p.size());
   for (std::size_t i = 0; i < p.size(); ++i) x[i] = p.position[i].x;
   std::sort(x.begin(), x.end());
-  double range[2] = {x.empty() ? kInfinity : -x.front(), x.empty() ? -kInfinity : x.back()};
+  // -min and max of x over the ranks (a rank without particles adds -inf to both).
+  double range[2] = {x.empty() ? -kInfinity : -x.front(), x.empty() ? -kInfinity : x.back()};
   MPI_Allreduce(MPI_IN_PLACE, range, 2, MPI_DOUBLE, MPI_MAX, comm_);
   const double x_lo = -range[0], x_hi = range[1];
   std::int64_t total = std::int64_t(p.size());
