@@ -28,18 +28,10 @@ TEST(DecomposedConservation, MomentumOfAFreePackingIsConserved) {
               {rng.uniform(-0.3, 0.3), rng.uniform(-0.3, 0.3), rng.uniform(-0.3, 0.3)},
               {rng.uniform(-50, 50), rng.uniform(-50, 50), rng.uniform(-50, 50)});
       }
-  ContactLaw law;
-  law.normal_stiffness = 2.0e4;
-  law.tangential_stiffness = 1.0e4;
-  law.restitution = 0.5;
-  law.static_friction = 0.4;
-  law.kinetic_friction = 0.3;
-  law.rolling_friction = 0.1;
-  law.rolling_model = RollingModel::elastic_plastic;
   SimulationSettings s;
   s.domain = box(0.1);
   s.max_overlap_fraction = 0.5;
-  Simulation sim(std::move(p), law, s);
+  Simulation sim(std::move(p), frictional_rolling_law(), s);
   sim.set_gravity(Vec3{0, 0, 0});
   SlabSettings fixed;  // particles cross the slabs' boundaries as the packing expands
   fixed.rebalance_above = std::numeric_limits<double>::infinity();

@@ -29,20 +29,6 @@ constexpr double kSpacing = 0.002;  // m; radii 0.95-1.07 mm: neighbours overlap
 constexpr int kNx = 16, kNy = 5, kNz = 5;
 constexpr double kDrift = 1.5;  // m/s along x, the packing's and the side wall's: particles cross slab boundaries
 
-ContactLaw particle_law() {
-  ContactLaw law;
-  law.normal_stiffness = 2.0e4;
-  law.tangential_stiffness = 1.0e4;
-  law.restitution = 0.5;
-  law.static_friction = 0.4;
-  law.kinetic_friction = 0.3;
-  law.rolling_friction = 0.1;
-  law.rolling_model = RollingModel::elastic_plastic;
-  law.lever_arm = RollingLeverArm::effective_radius;
-  law.rolling_damping = 0.3;
-  return law;
-}
-
 Simulation make_packing() {
   Rng rng(7);
   Particles p;
@@ -60,17 +46,17 @@ Simulation make_packing() {
   s.domain.lower = {-0.01, -0.01, -0.01};
   s.domain.upper = {0.05, 0.03, 0.03};
   s.max_overlap_fraction = 0.5;
-  Simulation sim(std::move(p), particle_law(), s);
-  ContactLaw floor = particle_law();
+  Simulation sim(std::move(p), frictional_rolling_law(), s);
+  ContactLaw floor = frictional_rolling_law();
   floor.normal_stiffness = 4.0e4;
   floor.static_friction = floor.kinetic_friction = 0.6;
   sim.add_wall(Wall::plane("floor", {0, 0, 0}, {0, 0, 1}, floor));
-  ContactLaw side = particle_law();
+  ContactLaw side = frictional_rolling_law();
   side.rolling_model = RollingModel::constant_torque;
   side.lever_arm = RollingLeverArm::average_radius;
   const std::size_t pusher = sim.add_wall(Wall::plane("side", {0, 0, 0}, {1, 0, 0}, side));
   sim.set_wall_velocity(pusher, Vec3{kDrift + 0.02, 0.0, 0.0});
-  ContactLaw plate = particle_law();
+  ContactLaw plate = frictional_rolling_law();
   plate.rolling_friction = 0.0;
   plate.restitution = 0.8;
   // A plate against the packing's far side (y = max), spanning the middle of x: several slabs.
@@ -99,10 +85,7 @@ TEST(DecomposedForces, OneStepEqualsOneProcessToRoundOff) {
   decompose_in_slabs(decomposed, MPI_COMM_WORLD);
   serial.step();
   decomposed.step();
-  const Particles all = gather_particles(decomposed, MPI_COMM_WORLD);
-  const Particles reference = sorted_by_id(serial.particles());
-  expect_same_ids(all, reference);
-  const Difference d = difference(all, reference);
+  const Difference d = compare_with_serial(decomposed, serial);
   root_report("{} ranks, one step: |dF|/F_max = {:.1e}, |dT|/T_max = {:.1e} (tol 1e-12)", world_size(), d.force, d.torque);
   EXPECT_LE(d.force, 1e-12);
   EXPECT_LE(d.torque, 1e-12);
@@ -132,10 +115,7 @@ TEST(DecomposedForces, ManyStepsWithMigrationEqualOneProcess) {
     serial.step();
     decomposed.step();
   }
-  const Particles all = gather_particles(decomposed, MPI_COMM_WORLD);
-  const Particles reference = sorted_by_id(serial.particles());
-  expect_same_ids(all, reference);
-  const Difference d = difference(all, reference);
+  const Difference d = compare_with_serial(decomposed, serial);
   root_report("{} ranks, 200 steps, {} rebuilds: |dF|/F_max = {:.1e}, |dT|/T_max = {:.1e}, |dx| = {:.1e} m (tol 1e-8)",
          world_size(), serial.stats().rebuilds, d.force, d.torque, d.position);
   EXPECT_LE(d.force, 1e-8);

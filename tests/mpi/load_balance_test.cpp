@@ -58,7 +58,7 @@ TEST(LoadBalance, BadlyPlacedSlabsAreMovedToTheQuantiles) {
   const std::int64_t total = 270, mean = total / world_size();
   for (int r = 0; r < world_size(); ++r) EXPECT_NEAR(double(n[std::size_t(r)]), double(mean), 1.0) << "rank " << r;
   EXPECT_EQ(d.rebalances(), world_size() > 1 ? 1 : 0);
-  const Difference diff = difference(gather_particles(sim, MPI_COMM_WORLD), sorted_by_id(serial.particles()));
+  const Difference diff = compare_with_serial(sim, serial);
   EXPECT_LE(diff.force, 1e-12);
   root_report("{} ranks: counts after the first rebuild {}, |dF|/F_max = {:.1e}", world_size(), fmt::join(n, " "),
               diff.force);

@@ -68,4 +68,27 @@ inline Particles sorted_by_id(const Particles& p) {
   return out;
 }
 
+// The decomposed run's particles (gathered from every rank) against the one-process run's.
+inline Difference compare_with_serial(const Simulation& decomposed, const Simulation& serial) {
+  const Particles all = gather_particles(decomposed, MPI_COMM_WORLD);
+  const Particles reference = sorted_by_id(serial.particles());
+  expect_same_ids(all, reference);
+  return difference(all, reference);
+}
+
+// Linear springs with friction and EPSD rolling resistance: pairs carry tangential and rolling springs.
+inline ContactLaw frictional_rolling_law() {
+  ContactLaw law;
+  law.normal_stiffness = 2.0e4;
+  law.tangential_stiffness = 1.0e4;
+  law.restitution = 0.5;
+  law.static_friction = 0.4;
+  law.kinetic_friction = 0.3;
+  law.rolling_friction = 0.1;
+  law.rolling_model = RollingModel::elastic_plastic;
+  law.lever_arm = RollingLeverArm::effective_radius;
+  law.rolling_damping = 0.3;
+  return law;
+}
+
 }  // namespace trapdem::testing_support
