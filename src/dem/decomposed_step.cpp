@@ -3,7 +3,8 @@
 // and the integrator are the engine's own; only what crosses a sub-domain boundary is added.
 //
 // 1. first half kick and drift of the owned particles (integrator.cpp);
-// 2. a list rebuild on every rank when any rank needs one (rebuild_lists: ghosts dropped, particles
+// 2. a stop on every rank when a particle escaped on one (before it would migrate); a list
+//    rebuild on every rank when any rank needs one (rebuild_lists: ghosts dropped, particles
 //    migrated with their histories, owned particles re-ordered, ghosts exchanged, lists built with
 //    each pair computed by one rank, keep_pairs_computed_here); else the ghosts' positions and
 //    velocities updated from their owners;
@@ -64,6 +65,15 @@ void Simulation::step_decomposed() {
     }
     d.agree_on_failure(failure);
   };
+  auto fail_together = [&] {  // each rank checks its own, then all throw the first failure, or none
+    std::string failure;
+    try {
+      check_stability();
+    } catch (const SimulationError& e) {
+      failure = e.what();
+    }
+    d.agree_on_failure(failure);
+  };
   auto forces = [&] {
     contacts(false);
     d.return_ghost_forces(p_);
@@ -75,7 +85,11 @@ void Simulation::step_decomposed() {
     setup_done_ = true;
   }
   integrate_positions();
-  if (d.any(lists_outdated()))
+  // One reduction decides: 2, a particle escaped on some rank (stop before it would migrate and
+  // its index change); 1, a rank needs new lists; 0, the ghosts are updated.
+  const double next = d.max(escaped_particle_ >= 0 ? 2.0 : (lists_outdated() ? 1.0 : 0.0));
+  if (next == 2.0) fail_together();
+  if (next == 1.0)
     rebuild_agreed();
   else
     d.update_ghosts(p_);
@@ -84,13 +98,7 @@ void Simulation::step_decomposed() {
   ++stats_.steps;
   // Each rank checks its own particles and contacts (the message names the one it found), then the
   // ranks agree; the largest overlap is the global one afterwards.
-  std::string failure;
-  try {
-    check_stability();
-  } catch (const SimulationError& e) {
-    failure = e.what();
-  }
-  d.agree_on_failure(failure);
+  fail_together();
   max_overlap_seen_ = d.max(max_overlap_seen_);
 }
 

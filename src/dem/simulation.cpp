@@ -310,6 +310,8 @@ void Simulation::drop_ghosts() {
 }
 
 void Simulation::restore(double time, const SimulationStats& stats, ListState lists) {
+  if (decomposition_)
+    throw InputError("resuming a checkpoint on several ranks is not supported yet: resume it in one process");
   time_ = time;
   stats_ = stats;
   pairs_ = std::move(lists.pairs);

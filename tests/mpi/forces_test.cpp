@@ -78,22 +78,29 @@ void expect_walls_equal(const Simulation& decomposed, const Simulation& serial, 
 
 }  // namespace
 
+// Each rank with 1 and with 3 OpenMP threads (the one-process run with 1): the sweep's thread
+// blocks then include the ghosts, and partners in a later block get their shares after the sweep.
 TEST(DecomposedForces, OneStepEqualsOneProcessToRoundOff) {
-  omp_set_num_threads(1);
-  Simulation serial = make_packing();
-  Simulation decomposed = make_packing();
-  decompose_in_slabs(decomposed, MPI_COMM_WORLD);
-  serial.step();
-  decomposed.step();
-  const Difference d = compare_with_serial(decomposed, serial);
-  root_report("{} ranks, one step: |dF|/F_max = {:.1e}, |dT|/T_max = {:.1e} (tol 1e-12)", world_size(), d.force, d.torque);
-  EXPECT_LE(d.force, 1e-12);
-  EXPECT_LE(d.torque, 1e-12);
-  expect_walls_equal(decomposed, serial, 1e-12, true);
-  // Every rank holds particles and ghosts (the split is real).
-  if (world_size() > 1) {
-    EXPECT_GT(decomposed.owned_count(), 0u);
-    EXPECT_GT(decomposed.particles().size(), decomposed.owned_count());
+  for (const int threads : {1, 3}) {
+    omp_set_num_threads(1);
+    Simulation serial = make_packing();
+    serial.step();
+    omp_set_num_threads(threads);
+    Simulation decomposed = make_packing();
+    decompose_in_slabs(decomposed, MPI_COMM_WORLD);
+    decomposed.step();
+    omp_set_num_threads(1);
+    const Difference d = compare_with_serial(decomposed, serial);
+    root_report("{} ranks x {} threads, one step: |dF|/F_max = {:.1e}, |dT|/T_max = {:.1e} (tol 1e-12)", world_size(),
+                threads, d.force, d.torque);
+    EXPECT_LE(d.force, 1e-12) << threads << " threads";
+    EXPECT_LE(d.torque, 1e-12) << threads << " threads";
+    expect_walls_equal(decomposed, serial, 1e-12, true);
+    // Every rank holds particles and ghosts (the split is real).
+    if (world_size() > 1) {
+      EXPECT_GT(decomposed.owned_count(), 0u);
+      EXPECT_GT(decomposed.particles().size(), decomposed.owned_count());
+    }
   }
 }
 
