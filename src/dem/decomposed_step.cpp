@@ -96,10 +96,19 @@ void Simulation::step_decomposed() {
   forces();
   bad_particle_ = kick_owned() ? first_non_finite_particle() : -1;
   ++stats_.steps;
-  // Each rank checks its own particles and contacts (the message names the one it found), then the
-  // ranks agree; the largest overlap is the global one afterwards.
-  fail_together();
-  max_overlap_seen_ = d.max(max_overlap_seen_);
+  // Each rank checks its own particles and contacts (the message names the one it found); one
+  // reduction tells whether any failed and the largest overlap; on a failure the ranks agree on
+  // the message.
+  std::string failure;
+  try {
+    check_stability();
+  } catch (const SimulationError& e) {
+    failure = e.what();
+  }
+  double reduced[2] = {failure.empty() ? 0.0 : 1.0, max_overlap_seen_};
+  d.max(reduced, 2);
+  if (reduced[0] > 0.0) d.agree_on_failure(failure);
+  max_overlap_seen_ = reduced[1];
 }
 
 }  // namespace trapdem

@@ -42,7 +42,11 @@ class Decomposition {
   // Global reductions. `sum` and the wall loads add the ranks' values in rank order, so a given
   // rank count gives the same numbers every time.
   virtual bool any(bool local) = 0;
-  virtual double max(double local) = 0;
+  virtual void max(double* values, int count) = 0;  // each value: its largest over the ranks
+  double max(double local) {
+    max(&local, 1);
+    return local;
+  }
   virtual double sum(double local) = 0;
   virtual void sum_wall_loads(std::vector<Wall>& walls) = 0;  // force and torque: the ranks' sums
 

@@ -307,9 +307,8 @@ bool SlabDecomposition::any(bool local) {
   return flag != 0;
 }
 
-double SlabDecomposition::max(double local) {
-  MPI_Allreduce(MPI_IN_PLACE, &local, 1, MPI_DOUBLE, MPI_MAX, comm_);
-  return local;
+void SlabDecomposition::max(double* values, int count) {
+  MPI_Allreduce(MPI_IN_PLACE, values, count, MPI_DOUBLE, MPI_MAX, comm_);
 }
 
 // Gathered and added in rank order (MPI_Allreduce may add in any order).

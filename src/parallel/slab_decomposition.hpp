@@ -34,7 +34,8 @@ class SlabDecomposition final : public Decomposition {
   void update_ghosts(Particles& p) override;
   void return_ghost_forces(Particles& p) override;
   bool any(bool local) override;
-  double max(double local) override;
+  void max(double* values, int count) override;
+  using Decomposition::max;
   double sum(double local) override;
   void sum_wall_loads(std::vector<Wall>& walls) override;
   void agree_on_failure(const std::string& message) override;
