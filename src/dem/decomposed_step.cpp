@@ -34,11 +34,13 @@ void Simulation::set_decomposition(std::unique_ptr<Decomposition> decomposition)
     wall_list_ = WallList{};
     pair_contact_.clear();
     history_pending_ = false;
-    decomposition_->adopt(p_);
+    decomposition_->adopt(p_, settings_.domain);
     ghosts_ = 0;
     invalidate_lists();
   }
 }
+
+bool Simulation::owns_site(const Vec3& x) const { return !decomposition_ || decomposition_->owns(x); }
 
 double Simulation::global_sum(double local) const { return decomposition_ ? decomposition_->sum(local) : local; }
 

@@ -12,6 +12,7 @@
 #include <string>
 #include <vector>
 
+#include "dem/domain.hpp"
 #include "dem/history_archive.hpp"
 #include "dem/particles.hpp"
 #include "dem/wall.hpp"
@@ -22,8 +23,12 @@ class Decomposition {
  public:
   virtual ~Decomposition() = default;
 
-  // Once, before the first step: every rank was given the same particles; each keeps its share.
-  virtual void adopt(Particles& p) = 0;
+  // Once, before the first step: every rank was given the same particles (possibly none, in the
+  // domain); each keeps its share.
+  virtual void adopt(Particles& p, const Domain& domain) = 0;
+  // Whether a particle placed at x now would be this rank's (a pour inserts each particle on the
+  // rank that owns its site; every rank draws the same sites).
+  virtual bool owns(const Vec3& x) const = 0;
 
   // At a list rebuild, ghosts already dropped: particles outside this rank's sub-domain leave
   // with their contact histories (the pair records whose lower id is theirs, their wall records)

@@ -63,7 +63,9 @@ class Simulation {
   void restore_wall_state(std::size_t k, const Vec3& origin, const Vec3& displacement, const Vec3& force,
                           const Vec3& torque, const Vec3& current_velocity);
 
-  // Adds particles during a run (pluviation); the lists are rebuilt before the next step.
+  // Adds particles during a run (pluviation); the lists are rebuilt before the next step. On a
+  // decomposition each rank adds the particles whose sites it owns (owns_site).
+  bool owns_site(const Vec3& x) const;
   void add_particle(std::int64_t id, const Vec3& x, double radius, double density, const Vec3& v = {});
   void remove_particles(const std::vector<std::uint32_t>& indices);
 

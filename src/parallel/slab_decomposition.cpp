@@ -85,8 +85,9 @@ int SlabDecomposition::owner_of(double x) const {
 }
 
 // Every rank holds the same particles: the boundaries are those given, or the x quantiles
-// k N / R (midway between the neighbouring particles) so every rank starts with ~N/R.
-void SlabDecomposition::adopt(Particles& p) {
+// k N / R (midway between the neighbouring particles) so every rank starts with ~N/R, or with
+// fewer particles than ranks (a pour's start) the domain's x in equal slabs.
+void SlabDecomposition::adopt(Particles& p, const Domain& domain) {
   bounds_.assign(std::size_t(ranks_) + 1, kInfinity);
   bounds_[0] = -kInfinity;
   if (!settings_.bounds.empty()) {
@@ -99,7 +100,9 @@ void SlabDecomposition::adopt(Particles& p) {
       const std::size_t at = p.size() * std::size_t(k) / std::size_t(ranks_);
       bounds_[std::size_t(k)] = 0.5 * (x[at - 1] + x[at]);
     }
-  }  // else every particle on rank 0 (interior bounds +inf) until a rebuild rebalances
+  } else {
+    for (int k = 1; k < ranks_; ++k) bounds_[std::size_t(k)] = domain.lower.x + domain.length(0) * k / ranks_;
+  }
   std::vector<std::uint32_t> keep;
   for (std::uint32_t i = 0; i < p.size(); ++i)
     if (owner_of(p.position[i].x) == rank_) keep.push_back(i);

@@ -17,7 +17,8 @@
 namespace trapdem {
 
 struct SlabSettings {
-  // Interior boundaries (m, R - 1 ascending values); empty: balanced on the particles' x at adopt.
+  // Interior boundaries (m, R - 1 ascending values); empty: balanced on the particles' x at adopt
+  // (without particles: the domain's x split in equal slabs).
   std::vector<double> bounds;
   // At a list rebuild the boundaries move when the largest rank's particle count exceeds the mean
   // by more than this fraction (infinity: never).
@@ -28,7 +29,8 @@ class SlabDecomposition final : public Decomposition {
  public:
   SlabDecomposition(MPI_Comm comm, SlabSettings settings);
 
-  void adopt(Particles& p) override;
+  void adopt(Particles& p, const Domain& domain) override;
+  bool owns(const Vec3& x) const override { return owner_of(x.x) == rank_; }
   void migrate(Particles& p, HistoryArchive& archive, double range) override;
   std::size_t exchange_ghosts(Particles& p, double range) override;
   void update_ghosts(Particles& p) override;
