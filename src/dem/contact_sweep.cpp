@@ -229,7 +229,7 @@ int Simulation::kick_after_deferred_shares(const SecondHalfKick& second_half_kic
 }
 
 std::int64_t Simulation::first_non_finite_particle() const {
-  for (std::size_t i = 0; i < p_.size(); ++i)
+  for (std::size_t i = 0; i < owned_count(); ++i)
     if (!is_finite(p_.velocity[i]) || !is_finite(p_.angular_velocity[i])) return std::int64_t(i);
   return -1;
 }

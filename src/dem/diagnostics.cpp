@@ -1,10 +1,12 @@
 #include <algorithm>
+#include <cmath>
 #include <string>
 #include <vector>
 
 #include <fmt/format.h>
 
 #include "core/errors.hpp"
+#include "dem/decomposition.hpp"
 #include "dem/simulation.hpp"
 
 // The engine's diagnostics: energies and contact counts (deterministic serial sums), and the
@@ -88,14 +90,14 @@ void Simulation::check_stability() const {
 
 double Simulation::translational_kinetic_energy() const {
   double e = 0.0;
-  for (std::size_t i = 0; i < p_.size(); ++i) e += 0.5 * p_.mass[i] * norm2(p_.velocity[i]);
-  return e;
+  for (std::size_t i = 0; i < owned_count(); ++i) e += 0.5 * p_.mass[i] * norm2(p_.velocity[i]);
+  return global_sum(e);
 }
 
 double Simulation::rotational_kinetic_energy() const {
   double e = 0.0;
-  for (std::size_t i = 0; i < p_.size(); ++i) e += 0.5 / p_.inv_inertia[i] * norm2(p_.angular_velocity[i]);
-  return e;
+  for (std::size_t i = 0; i < owned_count(); ++i) e += 0.5 / p_.inv_inertia[i] * norm2(p_.angular_velocity[i]);
+  return global_sum(e);
 }
 
 double Simulation::potential_energy(double reference_height) const {
@@ -104,14 +106,15 @@ double Simulation::potential_energy(double reference_height) const {
   if (g_len == 0.0) return 0.0;
   const Vec3 up = -g / g_len;
   double e = 0.0;
-  for (std::size_t i = 0; i < p_.size(); ++i) e += p_.mass[i] * g_len * (dot(p_.position[i], up) - reference_height);
-  return e;
+  for (std::size_t i = 0; i < owned_count(); ++i)
+    e += p_.mass[i] * g_len * (dot(p_.position[i], up) - reference_height);
+  return global_sum(e);
 }
 
 std::size_t Simulation::contact_count() const {
   std::size_t c = 0;
   for (std::uint32_t slot : pair_contact_) c += slot != kNoContact ? 1 : 0;
-  return c;
+  return decomposition_ ? std::size_t(std::llround(global_sum(double(c)))) : c;
 }
 
 }  // namespace trapdem

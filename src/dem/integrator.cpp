@@ -5,7 +5,7 @@
 
 namespace trapdem {
 
-DriftReport first_half_kick_and_drift(Particles& p, const Vec3* position_at_build, const Vec3& gravity, double dt,
+DriftReport first_half_kick_and_drift(Particles& p, std::size_t n, const Vec3* position_at_build, const Vec3& gravity, double dt,
                                       const Domain& domain, bool rotate) {
   const double half = 0.5 * dt;
   const Vec3 g = gravity;
@@ -17,7 +17,6 @@ DriftReport first_half_kick_and_drift(Particles& p, const Vec3* position_at_buil
       hi[a] = std::numeric_limits<double>::infinity();
     }
   }
-  const std::size_t n = p.size();
   Vec3* x = p.position.data();
   Vec3* v = p.velocity.data();
   Vec3* w = p.angular_velocity.data();

@@ -18,9 +18,10 @@ struct DriftReport {
   std::int64_t escaped = -1;       // the first particle outside the domain's bounded axes, or -1
 };
 
-// v += dt/2 (F/m + g), x += dt v, w += dt/2 T/I (w unchanged when `rotate` is false).
+// v += dt/2 (F/m + g), x += dt v, w += dt/2 T/I (w unchanged when `rotate` is false), for the
+// first n particles (the owned ones: a rank's ghosts move with their owners).
 // `position_at_build`: the positions at the last list build, or null when they are not tracked.
-DriftReport first_half_kick_and_drift(Particles& p, const Vec3* position_at_build, const Vec3& gravity, double dt,
+DriftReport first_half_kick_and_drift(Particles& p, std::size_t n, const Vec3* position_at_build, const Vec3& gravity, double dt,
                                       const Domain& domain, bool rotate);
 
 // Each wall moves by its prescribed velocity at the middle of the step [time, time + dt].

@@ -72,4 +72,22 @@ void build_pairs(const Particles& p, const CellSort& cells, const Domain& domain
   out.history.clear();
 }
 
+void keep_pairs_computed_here(PairList& list, std::size_t owned, const std::vector<std::int64_t>& id) {
+  const std::size_t n = list.first.size() - 1;
+  std::uint32_t kept = 0;
+  std::uint32_t from = list.first[0];
+  for (std::size_t i = 0; i < n; ++i) {
+    const std::uint32_t to = list.first[i + 1];
+    if (i < owned) {
+      for (std::uint32_t k = from; k < to; ++k) {
+        const std::uint32_t j = list.partner[k];
+        if (j < owned || id[i] < id[j]) list.partner[kept++] = j;
+      }
+    }
+    from = to;
+    list.first[i + 1] = kept;
+  }
+  list.partner.resize(kept);
+}
+
 }  // namespace trapdem

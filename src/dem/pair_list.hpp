@@ -32,4 +32,11 @@ using ContactSlots = std::vector<std::uint32_t>;  // per listed pair
 // Builds the half list of pairs closer than r_i + r_j + skin (minimum image on periodic axes).
 void build_pairs(const Particles& p, const CellSort& cells, const Domain& domain, double skin, PairList& out);
 
+// On a rank of a decomposition (the first `owned` particles its own, the rest ghosts): keeps the
+// pairs this rank computes. A pair of two owned particles is computed here; a pair of an owned
+// particle and a ghost is computed by the rank that owns the lower id of the two (its history is
+// kept there and migrates with that particle); a pair of two ghosts, elsewhere. So each pair is
+// computed once over all ranks. Ghosts follow the owned particles, so every owner kept is owned.
+void keep_pairs_computed_here(PairList& list, std::size_t owned, const std::vector<std::int64_t>& id);
+
 }  // namespace trapdem

@@ -32,6 +32,12 @@ void Particles::clear() {
   position.clear(); velocity.clear(); angular_velocity.clear(); force.clear(); torque.clear(); image.clear();
 }
 
+void Particles::truncate(std::size_t n) {
+  id.resize(n); radius.resize(n); mass.resize(n); inv_mass.resize(n); inv_inertia.resize(n);
+  position.resize(n); velocity.resize(n); angular_velocity.resize(n); force.resize(n); torque.resize(n);
+  image.resize(n);
+}
+
 namespace {
 template <class T>
 void apply_permutation(std::vector<T>& values, const std::vector<std::uint32_t>& new_to_old) {

@@ -34,6 +34,7 @@ struct Particles {
                   const Vec3& velocity = {}, const Vec3& angular_velocity = {});
   void reserve(std::size_t n);
   void clear();
+  void truncate(std::size_t n);  // keeps the first n particles
 
   // Applies a permutation: new index k takes what old index new_to_old[k] held.
   void permute(const std::vector<std::uint32_t>& new_to_old);

@@ -12,6 +12,7 @@
 #include "dem/cell_sort.hpp"
 #include "dem/contact_sweep.hpp"
 #include "core/errors.hpp"
+#include "dem/decomposition.hpp"
 #include "dem/integrator.hpp"
 #include "dem/periodic_wrap.hpp"
 
@@ -99,6 +100,7 @@ std::size_t Simulation::find_wall(const std::string& name) const {
 void Simulation::add_particle(std::int64_t id, const Vec3& x, double radius, double density, const Vec3& v) {
   if (!(radius > 0.0) || !(density > 0.0))
     throw InputError(fmt::format("particle {}: radius ({} m) and density ({} kg/m3) must be positive", id, radius, density));
+  drop_ghosts();  // the owned particles come first
   p_.add(id, x, radius, density, v);  // appending keeps the existing indices: the lists' history stays valid
   invalidate_lists();
 }
@@ -110,8 +112,9 @@ void Simulation::remove_particles(const std::vector<std::uint32_t>& indices) {
     pending_history_.store_walls(wall_list_, p_.id);
     history_pending_ = true;
   }
-  std::vector<char> drop(p_.size(), 0);
+  std::vector<char> drop(owned_count(), 0);
   for (auto i : indices) drop.at(i) = 1;
+  drop_ghosts();
   std::vector<std::uint32_t> keep;
   for (std::uint32_t i = 0; i < p_.size(); ++i)
     if (!drop[i]) keep.push_back(i);
@@ -137,6 +140,10 @@ void Simulation::run(std::int64_t steps) {
 // new positions with the half-step velocities, half kick). Second order in dt for conservative
 // forces; the dashpot sees velocities half a step old, which is first order and standard in DEM.
 void Simulation::step() {
+  if (decomposition_) {
+    step_decomposed();
+    return;
+  }
   if (!setup_done_) {  // forces of the initial state, so the first half kick sees them
     rebuild_lists();
     contacts(false);
@@ -211,7 +218,7 @@ void Simulation::integrate_positions() {
   // Particles added since the last build have no reference position: the lists are invalid then
   // and will be rebuilt anyway.
   const bool track = lists_valid_ && position_at_build_.size() == p_.size();
-  const DriftReport drift = first_half_kick_and_drift(p_, track ? position_at_build_.data() : nullptr, gravity(), dt_,
+  const DriftReport drift = first_half_kick_and_drift(p_, owned_count(), track ? position_at_build_.data() : nullptr, gravity(), dt_,
                                                       settings_.domain, !settings_.freeze_rotation);
   max_displacement2_ = drift.max_displacement2;
   escaped_particle_ = drift.escaped;
@@ -219,19 +226,22 @@ void Simulation::integrate_positions() {
   time_ += dt_;
 }
 
-void Simulation::update_neighbours_if_needed() {
+bool Simulation::lists_outdated() const {
   const double limit = 0.5 * skin_;
   bool rebuild = !lists_valid_ || max_displacement2_ > limit * limit;
   for (std::size_t k = 0; k < walls_.size() && !rebuild; ++k)
     rebuild = norm2(walls_[k].displacement - wall_displacement_at_build_[k]) > limit * limit;
-  if (rebuild) rebuild_lists();
+  return rebuild;
+}
+
+void Simulation::update_neighbours_if_needed() {
+  if (lists_outdated()) rebuild_lists();
 }
 
 void Simulation::rebuild_lists() {
   const double started = omp_get_wtime();
   ++stats_.rebuilds;
   const Domain& dom = settings_.domain;
-  wrap_periodic(p_, dom);
   HistoryArchive archive;
   if (history_pending_) {
     archive = std::move(pending_history_);
@@ -240,14 +250,21 @@ void Simulation::rebuild_lists() {
     archive.store_pairs(pairs_, pair_contact_, contacts_.data(), p_.id);
     archive.store_walls(wall_list_, p_.id);
   }
+  wrap_periodic(p_, dom);
 
-  const double r_max = p_.empty() ? 0.0 : *std::max_element(p_.radius.begin(), p_.radius.end());
-  const double cell = 2.0 * r_max + skin_;
+  double r_max = p_.empty() ? 0.0 : *std::max_element(p_.radius.begin(), p_.radius.end());
+  if (decomposition_) r_max = decomposition_->max(r_max);
+  const double cell = 2.0 * r_max + skin_;  // m, also the ghosts' range on a decomposition
   for (int a = 0; a < 3; ++a) {
     if (dom.periodic[a] && dom.length(a) < 2.0 * cell)
       throw InputError(fmt::format(
           "periodic axis {}: the domain length {} m must be at least twice the interaction range {} m", "xyz"[a],
           dom.length(a), cell));
+  }
+  if (decomposition_) {  // the ghosts go (drop_ghosts archived nothing more: the archive holds it all)
+    p_.truncate(owned_count());
+    ghosts_ = 0;
+    decomposition_->migrate(p_, archive, cell);
   }
   CellSort cells = sort_into_cells(p_.position, dom, cell);
   const bool reorder = settings_.reorder_every > 0 && rebuilds_since_reorder_ % settings_.reorder_every == 0;
@@ -256,10 +273,15 @@ void Simulation::rebuild_lists() {
     p_.permute(cells.order);
     cells = sort_into_cells(p_.position, dom, cell);
   }
+  if (decomposition_) {
+    ghosts_ = decomposition_->exchange_ghosts(p_, cell);
+    if (ghosts_ > 0) cells = sort_into_cells(p_.position, dom, cell);
+  }
   build_pairs(p_, cells, dom, skin_, pairs_);
+  if (ghosts_ > 0) keep_pairs_computed_here(pairs_, owned_count(), p_.id);
   size_contact_arrays();
   archive.restore_pairs(pairs_, p_.id, pair_contact_, contacts_.data());
-  build_wall_candidates(p_, walls_, skin_, wall_list_);
+  build_wall_candidates(p_, owned_count(), walls_, skin_, wall_list_);
   archive.restore_walls(wall_list_, p_.id);
 
   find_particles_near_walls();
@@ -275,7 +297,21 @@ Simulation::ListState Simulation::list_state() const {
   return {pairs(), wall_list_, position_at_build_, wall_displacement_at_build_, rebuilds_since_reorder_};
 }
 
+void Simulation::drop_ghosts() {
+  if (ghosts_ == 0) return;
+  if (!history_pending_ && !pairs_.first.empty()) {
+    pending_history_.store_pairs(pairs_, pair_contact_, contacts_.data(), p_.id);
+    pending_history_.store_walls(wall_list_, p_.id);
+    history_pending_ = true;
+  }
+  p_.truncate(owned_count());
+  ghosts_ = 0;
+  invalidate_lists();
+}
+
 void Simulation::restore(double time, const SimulationStats& stats, ListState lists) {
+  if (decomposition_)
+    throw InputError("resuming a checkpoint on several ranks is not supported yet: resume it in one process");
   time_ = time;
   stats_ = stats;
   pairs_ = std::move(lists.pairs);

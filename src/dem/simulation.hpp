@@ -36,6 +36,7 @@ struct SimulationStats {
 
 struct ContactSweep;    // the engine's contact workspace (contact_sweep.hpp)
 struct SecondHalfKick;  // integrator.hpp
+class Decomposition;    // the parallel back end (decomposition.hpp)
 
 class Simulation {
  public:
@@ -62,14 +63,26 @@ class Simulation {
   void restore_wall_state(std::size_t k, const Vec3& origin, const Vec3& displacement, const Vec3& force,
                           const Vec3& torque, const Vec3& current_velocity);
 
-  // Adds particles during a run (pluviation); the lists are rebuilt before the next step.
+  // Adds particles during a run (pluviation); the lists are rebuilt before the next step. On a
+  // decomposition each rank adds the particles whose sites it owns (owns_site).
+  bool owns_site(const Vec3& x) const;
   void add_particle(std::int64_t id, const Vec3& x, double radius, double density, const Vec3& v = {});
   void remove_particles(const std::vector<std::uint32_t>& indices);
 
   void step();
   void run(std::int64_t steps);
 
+  // Runs this Simulation as one rank of a domain decomposition (decomposition.hpp; the MPI one is
+  // src/parallel): every rank builds the same Simulation (same particles, walls, settings), then
+  // attaches its rank's decomposition before the first step and keeps its share of the particles.
+  // From then on step() and the diagnostics below are collective (every rank calls them).
+  void set_decomposition(std::unique_ptr<Decomposition> decomposition);
+  const Decomposition* decomposition() const { return decomposition_.get(); }
+
+  // particles() holds the owned particles first ([0, owned_count())), then, on a rank of a
+  // decomposition, the ghosts (copies of other ranks' particles). Without one: all are owned.
   const Particles& particles() const { return p_; }
+  std::size_t owned_count() const { return p_.size() - ghosts_; }
   Particles& particles_mutable() { invalidate_lists(); return p_; }
   const ContactLaw& particle_law() const { return law_; }
   const SimulationSettings& settings() const { return settings_; }
@@ -99,7 +112,8 @@ class Simulation {
   // displacement, load) must already hold the checkpoint's values.
   void restore(double time, const SimulationStats& stats, ListState lists);
 
-  // Diagnostics (deterministic serial sums).
+  // Diagnostics (deterministic serial sums; on a decomposition: of the owned particles, summed over
+  // the ranks in rank order).
   double translational_kinetic_energy() const;  // J
   double rotational_kinetic_energy() const;     // J
   double kinetic_energy() const { return translational_kinetic_energy() + rotational_kinetic_energy(); }
@@ -109,7 +123,12 @@ class Simulation {
 
  private:
   void integrate_positions();
+  bool lists_outdated() const;
   void update_neighbours_if_needed();
+  void step_decomposed();        // decomposed_step.cpp
+  void drop_ghosts();            // their histories kept for the next rebuild
+  int kick_owned();              // the second half kick of the owned particles (decomposed_step.cpp)
+  double global_sum(double local) const;
   void rebuild_lists();
   // Particle pairs and walls, and with kick the second half kick (contact_sweep.cpp).
   void contacts(bool kick);
@@ -130,6 +149,8 @@ class Simulation {
   SimulationSettings settings_;
   std::vector<Wall> walls_;
   std::unique_ptr<ContactSweep> sweep_;  // the laws as the loops read them, per-thread batches
+  std::unique_ptr<Decomposition> decomposition_;  // null: one process
+  std::size_t ghosts_ = 0;                        // the last ghosts_ particles of p_ are other ranks' copies
   std::function<Vec3(double)> gravity_;
   Vec3 constant_gravity_;
   bool gravity_is_constant_ = true;

@@ -6,8 +6,8 @@
 
 namespace trapdem {
 
-void build_wall_candidates(const Particles& p, const std::vector<Wall>& walls, double skin, WallList& out) {
-  const std::size_t n = p.size();
+void build_wall_candidates(const Particles& p, std::size_t n, const std::vector<Wall>& walls, double skin,
+                           WallList& out) {
   out.first.assign(n + 1, 0);
   out.wall.clear();
   for (std::size_t i = 0; i < n; ++i) {

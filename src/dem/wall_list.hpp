@@ -23,7 +23,9 @@ struct WallList {
   std::size_t size() const { return wall.size(); }
 };
 
-// Builds the particle-wall candidates closer than r_i + skin.
-void build_wall_candidates(const Particles& p, const std::vector<Wall>& walls, double skin, WallList& out);
+// Builds the particle-wall candidates closer than r_i + skin, of the first n particles (a rank's
+// owned ones: ghosts' wall contacts are their owners').
+void build_wall_candidates(const Particles& p, std::size_t n, const std::vector<Wall>& walls, double skin,
+                           WallList& out);
 
 }  // namespace trapdem
