@@ -18,9 +18,15 @@ double sphere_volume_below(double zc, double r, double a) {
 
 namespace {
 
+struct ContactCensus {
+  std::vector<int> per_particle;
+  double overlap_sum = 0.0, overlap_max = 0.0;  // overlap / (r_i + r_j)
+  long contacts = 0;
+};
+
 // Contacts per particle (overlap > 0) from a hash of cells one largest diameter wide: each pair is
-// found once from the lower cell key.
-std::vector<int> contact_counts(const Snapshot& s, const DepositSettings& settings, double cell) {
+// found once, from its lower index.
+ContactCensus contact_census(const Snapshot& s, const DepositSettings& settings, double cell) {
   const std::size_t n = s.size();
   auto key_of = [&](long ix, long iy, long iz) { return (ix * 1000003L + iy) * 1000003L + iz; };
   auto cell_of = [&](double v) { return long(std::floor(v / cell)); };
@@ -35,7 +41,9 @@ std::vector<int> contact_counts(const Snapshot& s, const DepositSettings& settin
   for (std::size_t i = 0; i < n; ++i)
     cells[key_of(cell_of(s.position[i].x), cell_y_of(s.position[i].y), cell_of(s.position[i].z))].push_back(
         std::uint32_t(i));
-  std::vector<int> count(n, 0);
+  ContactCensus census;
+  std::vector<int>& count = census.per_particle;
+  count.assign(n, 0);
   for (std::size_t i = 0; i < n; ++i) {
     const Vec3 xi = s.position[i];
     const long cx = cell_of(xi.x), cy = cell_y_of(xi.y), cz = cell_of(xi.z);
@@ -57,11 +65,15 @@ std::vector<int> contact_counts(const Snapshot& s, const DepositSettings& settin
             if (norm2(d) < reach * reach) {
               ++count[i];
               ++count[j];
+              const double overlap = (reach - std::sqrt(norm2(d))) / reach;
+              census.overlap_sum += overlap;
+              census.overlap_max = std::max(census.overlap_max, overlap);
+              ++census.contacts;
             }
           }
         }
   }
-  return count;
+  return census;
 }
 
 }  // namespace
@@ -107,7 +119,11 @@ DepositMetrics measure_deposit(const Snapshot& s, const DepositSettings& setting
     if (t >= 0.0) spread += (t - m.surface_height) * (t - m.surface_height);
   m.surface_roughness = std::sqrt(spread / filled);
 
-  const std::vector<int> contacts = contact_counts(s, settings, 2.0 * r_max);
+  const ContactCensus census = contact_census(s, settings, 2.0 * r_max);
+  const std::vector<int>& contacts = census.per_particle;
+  m.contacts = census.contacts;
+  m.mean_overlap = census.contacts > 0 ? census.overlap_sum / double(census.contacts) : 0.0;
+  m.max_overlap = census.overlap_max;
   const double area = settings.box_width * settings.box_depth;  // m^2
 
   // Solid volume and contacts of the particles whose centre lies in [a, b).

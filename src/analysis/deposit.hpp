@@ -35,6 +35,11 @@ struct DepositMetrics {
   double bulk_solid_fraction = 0.0;
   double bulk_coordination = 0.0;   // contacts (overlap > 0, walls not counted) per particle
   double bulk_rattler_fraction = 0.0;  // particles with fewer than two contacts
+  // Overlap of the particle contacts, relative to the pair's mean diameter r_i + r_j, over the whole
+  // deposit: what a softer spring must keep small (the paper's k_n discussion; docs/validation.md).
+  double mean_overlap = 0.0;
+  double max_overlap = 0.0;
+  long contacts = 0;
   std::vector<DepositBin> profile;  // from the base up to the highest top
 };
 

@@ -33,16 +33,18 @@ std::vector<DepositAtSnapshot> measure_run_deposit(const std::filesystem::path& 
 }
 
 std::string deposit_table(const std::vector<DepositAtSnapshot>& deposits) {
-  std::string t = fmt::format("{:<10} {:<11} {:>8} {:>9} {:>10} {:>9} {:>7} {:>8} {:>9}\n", "snapshot", "stage", "time s",
-                              "particles", "surface mm", "rough mm", "phi", "Z", "rattlers");
+  std::string t = fmt::format("{:<10} {:<11} {:>8} {:>9} {:>10} {:>9} {:>7} {:>8} {:>9} {:>12}\n", "snapshot", "stage",
+                              "time s", "particles", "surface mm", "rough mm", "phi", "Z", "rattlers", "overlap % d");
   for (const DepositAtSnapshot& d : deposits) {
     const DepositMetrics& m = d.metrics;
-    t += fmt::format("{:<10} {:<11} {:>8.4f} {:>9} {:>10.2f} {:>9.2f} {:>7.4f} {:>8.3f} {:>8.1f}%\n", d.snapshot, d.stage,
-                     d.time, m.particles, 1e3 * m.surface_height, 1e3 * m.surface_roughness, m.bulk_solid_fraction,
-                     m.bulk_coordination, 100.0 * m.bulk_rattler_fraction);
+    t += fmt::format("{:<10} {:<11} {:>8.4f} {:>9} {:>10.2f} {:>9.2f} {:>7.4f} {:>8.3f} {:>8.1f}% {:>5.3f}/{:<6.3f}\n",
+                     d.snapshot, d.stage, d.time, m.particles, 1e3 * m.surface_height, 1e3 * m.surface_roughness,
+                     m.bulk_solid_fraction, m.bulk_coordination, 100.0 * m.bulk_rattler_fraction, 100.0 * m.mean_overlap,
+                     100.0 * m.max_overlap);
   }
   t += "phi, Z, rattlers: the bulk layer (5 mean diameters above the base to 5 below the surface); Z counts\n"
-       "particle contacts (overlap > 0), rattlers have fewer than two.\n";
+       "particle contacts (overlap > 0), rattlers have fewer than two; overlap: mean/largest over all particle\n"
+       "contacts, in % of the pair's mean diameter.\n";
   return t;
 }
 
@@ -74,6 +76,9 @@ std::filesystem::path write_deposit_json(const std::filesystem::path& run_dir,
     j.set("bulk_solid_fraction", m.bulk_solid_fraction);
     j.set("bulk_coordination", m.bulk_coordination);
     j.set("bulk_rattler_fraction", m.bulk_rattler_fraction);
+    j.set("contacts", m.contacts);
+    j.set("mean_overlap_of_diameter", m.mean_overlap);
+    j.set("max_overlap_of_diameter", m.max_overlap);
     j.set("profile", std::move(profile));
     list.push_back(std::move(j));
   }

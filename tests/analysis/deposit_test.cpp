@@ -76,7 +76,11 @@ TEST(Deposit, SimpleCubicLatticeHasSolidFractionPiOverSixAndSixNeighboursInside)
   EXPECT_NEAR(m.bulk_z_low, 5.0 * 2.0 * kRadius, 1e-15);
   EXPECT_NEAR(m.bulk_coordination, 2.0 + 2.0 * (nx - 1.0) / nx + 2.0 * (ny - 1.0) / ny, 1e-12);
   EXPECT_EQ(m.bulk_rattler_fraction, 0.0);
-  EXPECT_NEAR(m.bulk_solid_fraction, expected, 1e-4);  // not whole layers at its ends
+  EXPECT_NEAR(m.bulk_solid_fraction, expected, 1e-4);
+  // Every neighbour pair overlaps by 2 r squeeze, i.e. squeeze of r_i + r_j.
+  EXPECT_EQ(m.contacts, long((nx - 1) * ny * nz + nx * (ny - 1) * nz + nx * ny * (nz - 1)));
+  EXPECT_NEAR(m.mean_overlap, squeeze, 1e-9);
+  EXPECT_NEAR(m.max_overlap, squeeze, 1e-9);  // not whole layers at its ends
 }
 
 TEST(Deposit, SpheresThatDoNotOverlapAreNotInContact) {
