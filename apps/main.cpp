@@ -12,6 +12,7 @@
 #include "compare_command.hpp"
 #include "core/errors.hpp"
 #include "core/thread_count.hpp"
+#include "deposit_command.hpp"
 #include "element_command.hpp"
 #include "piv_command.hpp"
 #include "run_command.hpp"
@@ -204,6 +205,10 @@ int main(int argc, char** argv) {
       ->check(thread_count);
   el->add_flag("--quiet", element.quiet, "No progress lines on the terminal (element.log keeps them)");
 
+  trapdem::app::DepositOptions deposit;
+  auto* dep = app.add_subcommand("deposit", "The fill's deposit: solid fraction, coordination, surface, before the trapdoor moves");
+  dep->add_option("dir", deposit.dir, "Run folder (snapshots.h5, resolved.toml)")->required()->check(CLI::ExistingDirectory);
+
   CLI11_PARSE(app, argc, argv);
   try {
     if (run_cmd->parsed()) return trapdem::app::run_experiment(run);
@@ -219,6 +224,7 @@ int main(int argc, char** argv) {
     if (study_cmd->parsed()) return trapdem::app::run_study(study);
     if (cal->parsed()) return trapdem::app::run_calibrate(calibrate);
     if (el->parsed()) return trapdem::app::run_element(element);
+    if (dep->parsed()) return trapdem::app::run_deposit(deposit);
   } catch (const trapdem::InputError& e) {
     fmt::print(stderr, "trapdem: input error: {}\n", e.what());
     return 2;

@@ -1,10 +1,10 @@
 #!/bin/bash
-# The standard benchmark, trapdem side: the peers' settled beds (N = 19928 and 80560), 1 and 2
+# The standard benchmark, trapdem side: the settled beds (N = 19928, 80560, 298920), 1 and 2
 # OpenMP threads, REPS repetitions each; prints the median line per case:
 #   trapdem N=19928 threads=1 Mpsteps/s=12.34
 # Usage: bash bench/run-bench.sh [BUILD]     (make bench)
-# Env: REPS (3), STEPS_S (5000, N~20k), STEPS_L (1250, N~80k), WARMUP (300), THREADS ("1 2"),
-#      SIZES ("0.1 0.4"), BENCH_DATA (packing cache, default BUILD/bench-data), PEERS.
+# Env: REPS (3), STEPS_S (5000, N~20k), STEPS_L (1250, N~80k), STEPS_XL (400, N~300k), WARMUP (300), THREADS ("1 2"),
+#      SIZES ("0.1 0.4 1.5"), BENCH_DATA (packing cache, default BUILD/bench-data), PEERS.
 source "$(dirname "$0")/common.sh"
 REPS=${REPS:-3}
 WARMUP=${WARMUP:-300}

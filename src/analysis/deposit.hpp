@@ -1,0 +1,53 @@
+#pragma once
+// The deposit a fill leaves: solid fraction and coordination number by height, the surface height,
+// and their bulk values. What a faster fill must reproduce before it may replace the slow pour
+// (docs/validation.md): the same density, its profile with height and the same contact network.
+#include <vector>
+
+#include "io/snapshot.hpp"
+
+namespace trapdem {
+
+struct DepositSettings {
+  double box_width = 0.0;       // m (x from 0)
+  double box_depth = 0.0;       // m (y from 0)
+  bool periodic_depth = false;  // y periodic: contacts across y = 0 / depth count
+  double bin_height = 0.0;      // m; 0: five mean diameters
+  // The bulk layer, where the base and the free surface do not matter: from `base_margin` above
+  // the base to `surface_margin` below the surface, in mean diameters.
+  double base_margin = 5.0;
+  double surface_margin = 5.0;
+};
+
+struct DepositBin {
+  double z_low = 0.0, z_high = 0.0;  // m
+  double solid_fraction = 0.0;       // sphere volume inside the slab / slab volume
+  double coordination = 0.0;         // contacts per particle whose centre is in the slab
+  int particles = 0;                 // centres in the slab
+};
+
+struct DepositMetrics {
+  int particles = 0;
+  double mean_diameter = 0.0;       // m
+  double surface_height = 0.0;      // m, mean over columns two mean diameters wide of the highest top
+  double surface_roughness = 0.0;   // m, standard deviation of those column tops
+  double bulk_z_low = 0.0, bulk_z_high = 0.0;  // m, the bulk layer
+  double bulk_solid_fraction = 0.0;
+  double bulk_coordination = 0.0;   // contacts (overlap > 0, walls not counted) per particle
+  double bulk_rattler_fraction = 0.0;  // particles with fewer than two contacts
+  // Overlap of the particle contacts, relative to the pair's mean diameter r_i + r_j, over the whole
+  // deposit: what a softer spring must keep small (the paper's k_n discussion; docs/validation.md).
+  double mean_overlap = 0.0;
+  double max_overlap = 0.0;
+  long contacts = 0;
+  std::vector<DepositBin> profile;  // from the base up to the highest top
+};
+
+// Throws InputError for an empty snapshot, a box of no size or particles outside it in x or y.
+DepositMetrics measure_deposit(const Snapshot& snapshot, const DepositSettings& settings);
+
+// The volume (m^3) of a sphere of radius r centred at height zc that lies below the plane z = a:
+// a cap of height h = a - (zc - r) has pi h^2 (3 r - h) / 3.
+double sphere_volume_below(double zc, double r, double a);
+
+}  // namespace trapdem
