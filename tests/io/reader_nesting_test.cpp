@@ -32,7 +32,7 @@ std::string dotted(int levels) {
 TEST(ConfigNesting, DeepHeadersKeysAndValuesAreRefusedBeforeParsing) {
   for (const std::string& text : {"x = 1\n[" + dotted(50000) + "]\ny = 1\n",   // a header
                                   "x = 1\n" + dotted(50000) + " = 1\n",          // a dotted key
-                                  "[" + dotted(40) + "]\n" + dotted(40) + " = 1\n",  // both, 80 deep
+                                  std::string("[") + dotted(40) + "]\n" + dotted(40) + " = 1\n",  // both, 80 deep
                                   "x = 1\nv = " + std::string(5000, '[') + std::string(5000, ']') + "\n",
                                   "x = 1\nv = " + [] {
                                     std::string t;
@@ -67,7 +67,7 @@ TEST(ConfigNesting, ShallowDocumentsPass) {
 
 // The unused-key walk holds its own stack: 60 levels (under the bound) of unknown tables are listed.
 TEST(ConfigNesting, UnusedKeyWalkListsDeepKeys) {
-  Config c = Config::parse("[" + dotted(60) + "]\nleaf = 1\n[b]\nc = 2\n", "deep.toml");
+  Config c = Config::parse(std::string("[") + dotted(60) + "]\nleaf = 1\n[b]\nc = 2\n", "deep.toml");
   const auto unused = c.unused_keys();
   ASSERT_EQ(unused.size(), 2u);
   EXPECT_EQ(unused[0], dotted(60) + ".leaf");
