@@ -16,6 +16,7 @@
 #include "study/replicate_statistics.hpp"
 #include "study/replicates.hpp"
 #include "study/study_definition.hpp"
+#include "study_file.hpp"
 #include "study/study_runner.hpp"
 
 namespace fs = std::filesystem;
@@ -23,22 +24,8 @@ using namespace trapdem;
 
 namespace {
 
-fs::path write_study(const std::string& name, const std::string& text) {
-  const fs::path dir = fs::temp_directory_path() / ("trapdem-replicates-" + std::to_string(::getpid()));
-  fs::create_directories(dir);
-  const fs::path file = dir / name;
-  std::ofstream(file) << text;
-  return file;
-}
-
-std::string error_of(const std::string& text) {
-  try {
-    load_study(write_study("bad.toml", text));
-  } catch (const InputError& e) {
-    return e.what();
-  }
-  return "(no error)";
-}
+using study_test::error_of;
+using study_test::write_study;
 
 const fs::path kPresets = fs::path(TRAPDEM_SOURCE_DIR) / "presets";
 

@@ -1,0 +1,34 @@
+#pragma once
+// A study file written by a test, and the error its loading gives: shared by the study tests.
+#include <unistd.h>
+
+#include <filesystem>
+#include <fstream>
+#include <string>
+
+#include "core/errors.hpp"
+#include "study/study_definition.hpp"
+
+namespace trapdem::study_test {
+
+// `text` as `name` in a folder of this process's own under the temporary directory.
+inline std::filesystem::path write_study(const std::string& name, const std::string& text) {
+  const std::filesystem::path dir =
+      std::filesystem::temp_directory_path() / ("trapdem-study-file-" + std::to_string(::getpid()));
+  std::filesystem::create_directories(dir);
+  const std::filesystem::path file = dir / name;
+  std::ofstream(file) << text;
+  return file;
+}
+
+// The InputError message of loading `text` as a study, or "(no error)".
+inline std::string error_of(const std::string& text) {
+  try {
+    load_study(write_study("bad.toml", text));
+  } catch (const InputError& e) {
+    return e.what();
+  }
+  return "(no error)";
+}
+
+}  // namespace trapdem::study_test
