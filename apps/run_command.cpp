@@ -1,5 +1,6 @@
 #include "run_command.hpp"
 
+#include <algorithm>
 #include <cstdlib>
 
 #include <fmt/format.h>
@@ -8,6 +9,9 @@
 #include "experiment/folder_run.hpp"
 #include "experiment/presets.hpp"
 #include "installed_presets.hpp"
+#ifdef TRAPDEM_HAVE_MPI
+#include "parallel/mpi_run.hpp"
+#endif
 
 namespace fs = std::filesystem;
 
@@ -25,6 +29,14 @@ int list_presets() {
   for (const PresetEntry& p : trapdem::list_presets(preset_directory()))
     fmt::print("{:<18} {}\n", p.name, p.description);
   return 0;
+}
+
+// Whether an MPI launcher started this process as one of several ranks (Open MPI's mpirun sets
+// OMPI_COMM_WORLD_SIZE; MPICH's mpiexec and Slurm's srun with PMI set PMI_SIZE).
+int launched_ranks() {
+  for (const char* name : {"OMPI_COMM_WORLD_SIZE", "PMI_SIZE"})
+    if (const char* value = std::getenv(name)) return std::max(1, std::atoi(value));
+  return 1;
 }
 
 int run_experiment(const RunOptions& o) {
@@ -45,6 +57,16 @@ int run_experiment(const RunOptions& o) {
   run.quiet = o.quiet;
   run.stop_after_seconds = o.stop_after_seconds;
   run.stop_at_step = o.stop_at_step;
+  if (launched_ranks() > 1) {
+#ifdef TRAPDEM_HAVE_MPI
+    return run_in_folder_on_ranks(run);
+#else
+    throw InputError(fmt::format("started as {} ranks (mpirun), but this trapdem was built without MPI: each would run "
+                                 "the whole experiment into the same folder; build with -DTRAPDEM_MPI=ON (Open MPI: "
+                                 "scripts/install-deps) or run one process",
+                                 launched_ranks()));
+#endif
+  }
   return run_in_folder(run) ? 0 : 130;
 }
 

@@ -27,6 +27,7 @@
 #include "core/errors.hpp"
 #include "dem/simulation.hpp"
 #include "io/lammps_data.hpp"
+#include "standard_problem.hpp"
 
 using namespace trapdem;
 
@@ -93,7 +94,6 @@ Particles tiled_along_x(const Particles& bed, double width, int copies) {
 }
 
 int run(const Options& o) {
-  constexpr double kDepth = 0.0182, kHeight = 0.2;
   omp_set_num_threads(o.threads);
 
   LammpsData data = read_lammps_data(o.data);
@@ -104,31 +104,7 @@ int run(const Options& o) {
   const std::size_t n = data.particles.size();
   const double width = o.width * o.tile;  // m
 
-  ContactLaw law;
-  law.normal_stiffness = 1.0e6;
-  law.tangential_stiffness = 5.0e5;
-  law.restitution = 0.9;
-  law.static_friction = 0.5;
-  law.kinetic_friction = 0.5;
-  law.rolling_friction = 0.2;
-  law.rolling_model = RollingModel::elastic_plastic;
-  law.rolling_stiffness = RollingStiffness::tangential;
-  law.lever_arm = RollingLeverArm::effective_radius;
-  law.rolling_damping = 0.0;  // LIGGGHTS epsd2: no rolling dashpot
-
-  SimulationSettings s;
-  s.time_step = 6.472e-7;
-  s.skin = 4.0e-4;
-  s.domain.lower = {0.0, 0.0, 0.0};
-  s.domain.upper = {width, kDepth, kHeight};
-
-  Simulation sim(std::move(data.particles), law, s);
-  sim.set_gravity(Vec3{0.0, 0.0, -50.0 * 9.81});
-  sim.add_wall(Wall::plane("x0", {0, 0, 0}, {1, 0, 0}, law));
-  sim.add_wall(Wall::plane("x1", {width, 0, 0}, {-1, 0, 0}, law));
-  sim.add_wall(Wall::plane("y0", {0, 0, 0}, {0, 1, 0}, law));
-  sim.add_wall(Wall::plane("y1", {0, kDepth, 0}, {0, -1, 0}, law));
-  sim.add_wall(Wall::plane("z0", {0, 0, 0}, {0, 0, 1}, law));
+  Simulation sim = standard_problem(std::move(data.particles), width);
 
   sim.run(o.warmup);
   const std::int64_t rebuilds0 = sim.stats().rebuilds;
@@ -156,7 +132,7 @@ int run(const Options& o) {
     LammpsWriteOptions w;
     w.title = "trapdem bench bed: " + std::to_string(o.tile) + " x " + o.data + ", settled " +
               std::to_string(o.warmup + o.steps) + " steps at 50 g";
-    write_lammps_data(o.write, sim.particles(), Vec3{0.0, 0.0, 0.0}, Vec3{width, kDepth, kHeight}, w);
+    write_lammps_data(o.write, sim.particles(), Vec3{0.0, 0.0, 0.0}, Vec3{width, kStandardDepth, kStandardHeight}, w);
   }
   if (!std::isfinite(rate) || contacts_per_particle < 1.0)
     throw SimulationError("implausible run: contacts per particle " + std::to_string(contacts_per_particle) +

@@ -309,9 +309,11 @@ void Simulation::drop_ghosts() {
   invalidate_lists();
 }
 
-void Simulation::restore(double time, const SimulationStats& stats, ListState lists) {
-  if (decomposition_)
-    throw InputError("resuming a checkpoint on several ranks is not supported yet: resume it in one process");
+void Simulation::restore(double time, const SimulationStats& stats, ListState lists, std::size_t ghosts) {
+  if (ghosts > p_.size() || (ghosts > 0 && !decomposition_))
+    throw InputError(fmt::format("restore: {} ghosts among {} particles{}", ghosts, p_.size(),
+                                 decomposition_ ? "" : " without a decomposition"));
+  ghosts_ = ghosts;
   time_ = time;
   stats_ = stats;
   pairs_ = std::move(lists.pairs);
@@ -325,6 +327,29 @@ void Simulation::restore(double time, const SimulationStats& stats, ListState li
   history_pending_ = false;
   lists_valid_ = true;
   setup_done_ = true;
+}
+
+void Simulation::resume_from_histories(double time, const SimulationStats& stats, HistoryArchive histories) {
+  time_ = time;
+  stats_ = stats;
+  ghosts_ = 0;
+  pairs_ = PairList{};
+  wall_list_ = WallList{};
+  pair_contact_.clear();
+  if (decomposition_) {
+    // Each rank keeps its particles, a pair's history with the lower id (the rank that computes the
+    // pair, keep_pairs_computed_here) and a wall contact's with its particle.
+    decomposition_->adopt(p_, settings_.domain);
+    std::vector<std::int64_t> mine = p_.id;
+    std::sort(mine.begin(), mine.end());
+    auto here = [&](std::int64_t id) { return std::binary_search(mine.begin(), mine.end(), id); };
+    std::erase_if(histories.pairs, [&](const HistoryArchive::PairRecord& r) { return !here(r.low); });
+    std::erase_if(histories.walls, [&](const HistoryArchive::WallRecord& r) { return !here(r.particle); });
+  }
+  pending_history_ = std::move(histories);
+  history_pending_ = true;
+  invalidate_lists();
+  setup_done_ = true;  // the particles' forces are the checkpoint's: the next step starts with a kick
 }
 
 }  // namespace trapdem

@@ -32,6 +32,11 @@ struct SimulationStats {
   std::int64_t rebuilds = 0;
   std::int64_t steps = 0;
   double rebuild_seconds = 0.0;  // s of wall-clock time in rebuilds, in this process (not checkpointed)
+  // On a rank of a decomposition (this process; not checkpointed): the ghosts held, summed over
+  // the steps (mean halo = ghost_steps / steps), and the wall-clock seconds spent in the ghost
+  // exchanges (positions out, forces back) and the reductions of the step.
+  std::int64_t ghost_steps = 0;
+  double exchange_seconds = 0.0;
 };
 
 struct ContactSweep;    // the engine's contact workspace (contact_sweep.hpp)
@@ -109,8 +114,15 @@ class Simulation {
   };
   ListState list_state() const;
   // Restores time, counters and lists; particles (forces and torques included) and walls (origin,
-  // displacement, load) must already hold the checkpoint's values.
-  void restore(double time, const SimulationStats& stats, ListState lists);
+  // displacement, load) must already hold the checkpoint's values. On a rank of a decomposition the
+  // particles are the rank's as checkpointed (owned, then `ghosts` ghosts) and the decomposition's
+  // own state is restored by its owner.
+  void restore(double time, const SimulationStats& stats, ListState lists, std::size_t ghosts = 0);
+  // Resumes from a state without lists (a checkpoint of another rank count): particles (forces and
+  // torques included, all of them on every rank) and walls already set; the contact histories come
+  // by ids and the next step rebuilds the lists. With a decomposition attached, each rank keeps
+  // its share of the particles and of the histories.
+  void resume_from_histories(double time, const SimulationStats& stats, HistoryArchive histories);
 
   // Diagnostics (deterministic serial sums; on a decomposition: of the owned particles, summed over
   // the ranks in rank order).

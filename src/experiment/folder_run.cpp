@@ -15,6 +15,7 @@
 #include "experiment/run_folder.hpp"
 #include "experiment/run_identity.hpp"
 #include "experiment/run_log.hpp"
+#include "experiment/run_ranks.hpp"
 #include "experiment/run_record.hpp"
 #include "experiment/run_recorder.hpp"
 #include "experiment/trapdoor_experiment.hpp"
@@ -126,80 +127,123 @@ void check_configuration(const FolderRunOptions& o, const std::map<std::string, 
   write_text_atomically(folder.resolved_toml(), record + config.resolved_toml());
 }
 
-// The run once its folder's log is open (`log` is emplaced as soon as the folder is known).
+// run.log on ranks: each rank's particles and halo in this segment (ghosts held per step, the
+// wall clock of the exchanges per step), the measured inputs of the weak-scaling model
+// (bench/RESULTS.md).
+void report_halo(RunRecorder& recorder, RunRanks& ranks, const Simulation& sim, std::int64_t steps) {
+  const SimulationStats& s = sim.stats();
+  const double per_step = 1.0 / double(std::max<std::int64_t>(steps, 1));
+  const std::vector<double> all = ranks.gather_on_root(
+      {double(sim.owned_count()), double(s.ghost_steps) * per_step, s.exchange_seconds * per_step});
+  for (std::size_t r = 0; 3 * r + 2 < all.size(); ++r)
+    recorder.say(fmt::format("  rank {}: {:.0f} particles, {:.0f} ghosts per step on average, exchanges {:.1f} us per step",
+                             r, all[3 * r], all[3 * r + 1], all[3 * r + 2] * 1e6));
+}
+
+// The run once its folder's log is open (`log` is emplaced as soon as the folder is known). On
+// ranks every rank reads the configuration; the folder's checks and files are rank 0's, and each
+// step of the set-up is agreed on (an error on one rank is thrown on all).
 bool run_logged(const FolderRunOptions& o, std::optional<RunLog>& log) {
-  check_resume_options(o);
+  RunRanks* const ranks = o.ranks;
+  const bool root = !ranks || ranks->root();
   bool resume = !o.resume_dir.empty();
   fs::path out;
   bool restart = false;  // --resume of a folder stopped before its first checkpoint
-  Config config = [&] {
+  std::optional<Config> loaded;
+  agreed(ranks, [&] {
+    check_resume_options(o);
     if (resume) {
       out = o.resume_dir;
       const RunFolder folder(out);
-      if (!folder.has_checkpoint() && !fs::exists(folder.resolved_toml()))
-        throw InputError(fmt::format("--resume {}: neither checkpoint.h5 nor resolved.toml there: not a run folder",
-                                     out.string()));
-      log.emplace(folder.run_log(), o.quiet);
-      log->say(fmt::format("trapdem run --resume {}", out.string()));
-      restart = !folder.has_checkpoint();
-      return Config::load_file(folder.resolved_toml().string());
+      if (root) {
+        if (!folder.has_checkpoint() && !fs::exists(folder.resolved_toml()))
+          throw InputError(fmt::format("--resume {}: neither checkpoint.h5 nor resolved.toml there: not a run folder",
+                                       out.string()));
+        log.emplace(folder.run_log(), o.quiet);
+        log->say(fmt::format("trapdem run --resume {}", out.string()));
+        restart = !folder.has_checkpoint();
+      }
+      loaded = Config::load_file(folder.resolved_toml().string());
+    } else {
+      loaded = Config::load_file(o.config_file.string());
     }
-    return Config::load_file(o.config_file.string());
-  }();
-  config.apply_overrides(o.overrides);
-  const ExperimentConfig experiment_config = ExperimentConfig::from(config);
-  const std::string configuration = resolved_values(config);
+  });
+  if (ranks) restart = ranks->broadcast(restart);
+  Config& config = *loaded;
+  std::optional<ExperimentConfig> read;
+  std::string configuration;
+  agreed(ranks, [&] {
+    config.apply_overrides(o.overrides);
+    read = ExperimentConfig::from(config);
+    configuration = resolved_values(config);
+  });
+  const ExperimentConfig& experiment_config = *read;
   const int threads = o.threads > 0 ? o.threads : experiment_config.numerics.threads;
   if (threads > 0) omp_set_num_threads(threads);
-  if (restart) {
-    // Killed before its first checkpoint (during it, or earlier): nothing to carry on, so the run
-    // starts again from the beginning in the same folder; what it wrote so far is written anew.
-    const RunFolder folder(out);
-    log->say(fmt::format("no checkpoint.h5 in {} (the run stopped before its first checkpoint was complete): starting "
-                         "it again from the beginning with its resolved.toml", out.string()));
-    for (const fs::path& p : {folder.snapshots_h5(), fs::path(folder.snapshots_h5()).replace_extension(".xmf"),
-                              folder.trapdoor_csv()})
-      fs::remove(p);
-    resume = false;
-  } else if (!resume) {
+  if (restart) resume = false;
+  if (!resume && o.resume_dir.empty())
     out = o.out_dir.empty() ? fs::path("trapdem-out") / experiment_config.name : o.out_dir;
-    const RunFolder folder(out);
-    if (folder.has_checkpoint() || folder.has_snapshots())
-      throw InputError(fmt::format("{} already holds a run: resume it with --resume {}, or choose another --out",
-                                   out.string(), out.string()));
-    std::error_code ec;
-    fs::create_directories(out, ec);
-    if (ec) throw FileError(fmt::format("cannot create the output folder {}: {}", out.string(), ec.message()));
-    log.emplace(folder.run_log(), o.quiet);  // before anything else is written: the log from its first line
-  }
   const RunFolder folder(out);
   std::optional<Checkpoint> ckpt;
-  if (resume) {
-    ckpt = read_checkpoint(folder.checkpoint_h5());
-    check_configuration(o, ckpt->metadata, configuration, folder, config, *log, ckpt->stats.steps);
-    std::optional<std::size_t> count;
-    if (auto it = ckpt->metadata.find(RunRecorder::kSnapshotCount); it != ckpt->metadata.end())
-      count = std::stoul(it->second);
-    cut_snapshots_to_checkpoint(folder.snapshots_h5(), count, ckpt->stats.steps);
-  } else {
-    describe_run(*log, experiment_config, out);
-    std::string record;
-    for (const std::string& key : o.allowed_changes)
-      record += fmt::format("# --allow-change {} given at a restart from the beginning\n", key);
-    write_text_atomically(folder.resolved_toml(), record + config.resolved_toml());
-  }
+  on_root(ranks, [&] {
+    if (restart) {
+      // Killed before its first checkpoint (during it, or earlier): nothing to carry on, so the run
+      // starts again from the beginning in the same folder; what it wrote so far is written anew.
+      log->say(fmt::format("no checkpoint.h5 in {} (the run stopped before its first checkpoint was complete): "
+                           "starting it again from the beginning with its resolved.toml", out.string()));
+      for (const fs::path& p : {folder.snapshots_h5(), fs::path(folder.snapshots_h5()).replace_extension(".xmf"),
+                                folder.trapdoor_csv()})
+        fs::remove(p);
+    } else if (!resume) {
+      if (folder.has_checkpoint() || folder.has_snapshots())
+        throw InputError(fmt::format("{} already holds a run: resume it with --resume {}, or choose another --out",
+                                     out.string(), out.string()));
+      std::error_code ec;
+      fs::create_directories(out, ec);
+      if (ec) throw FileError(fmt::format("cannot create the output folder {}: {}", out.string(), ec.message()));
+      log.emplace(folder.run_log(), o.quiet);  // before anything else is written: the log from its first line
+    }
+    if (resume) {
+      ckpt = read_checkpoint(folder.checkpoint_h5());
+      check_configuration(o, ckpt->metadata, configuration, folder, config, *log, ckpt->stats.steps);
+      std::optional<std::size_t> count;
+      if (auto it = ckpt->metadata.find(RunRecorder::kSnapshotCount); it != ckpt->metadata.end())
+        count = std::stoul(it->second);
+      cut_snapshots_to_checkpoint(folder.snapshots_h5(), count, ckpt->stats.steps);
+    } else {
+      describe_run(*log, experiment_config, out);
+      if (ranks) log->say(fmt::format("  on {} ranks (MPI), each with the threads above", ranks->ranks()));
+      std::string record;
+      for (const std::string& key : o.allowed_changes)
+        record += fmt::format("# --allow-change {} given at a restart from the beginning\n", key);
+      write_text_atomically(folder.resolved_toml(), record + config.resolved_toml());
+    }
+  });
 
-  TrapdoorExperiment experiment(experiment_config);
-  RunRecorder recorder(experiment, folder, *log, RunStopRules{&g_signal, o.stop_after_seconds, o.stop_at_step});
+  std::optional<TrapdoorExperiment> built;
+  agreed(ranks, [&] {
+    built.emplace(experiment_config);
+    if (ranks) built->attach_decomposition(ranks->decomposition());
+  });
+  TrapdoorExperiment& experiment = *built;
+  RunRecorder recorder(experiment, folder, log ? &*log : nullptr,
+                       RunStopRules{&g_signal, o.stop_after_seconds, o.stop_at_step}, ranks);
   recorder.set_configuration(configuration);
   if (resume) {
-    const auto metadata = ckpt->metadata;
-    const std::int64_t step = ckpt->stats.steps;
-    restore_checkpoint(experiment.simulation(), std::move(*ckpt));
-    experiment.restore(metadata);
-    write_text_atomically(folder.trapdoor_csv(), ground_reaction_csv(experiment.ground_reaction()));
+    std::map<std::string, std::string> metadata;
+    if (ranks) {
+      metadata = ranks->restore_checkpoint(std::move(ckpt), experiment.simulation());
+    } else {
+      metadata = ckpt->metadata;
+      restore_checkpoint(experiment.simulation(), std::move(*ckpt));
+    }
+    agreed(ranks, [&] { experiment.restore(metadata); });
+    on_root(ranks, [&] {
+      write_text_atomically(folder.trapdoor_csv(), ground_reaction_csv(experiment.ground_reaction()));
+    });
     recorder.say(fmt::format("resumed {} at t = {:.6f} s (step {}, stage {})", out.string(),
-                             experiment.simulation().time(), step, stage_name(experiment.stage())));
+                             experiment.simulation().time(), experiment.simulation().step_count(),
+                             stage_name(experiment.stage())));
   }
 
   g_signal = 0;
@@ -219,17 +263,20 @@ bool run_logged(const FolderRunOptions& o, std::optional<RunLog>& log) {
   std::signal(SIGTERM, previous_term);
   const double seconds = now_seconds() - start;
   const Simulation& sim = experiment.simulation();
+  const std::size_t particles = experiment.particle_count();
   recorder.say(fmt::format("{} after {} of wall clock: {} steps, {} particles, {:.2f} M particle-steps/s",
                            complete ? "finished" : "stopped (checkpoint written; carry on with --resume)",
-                           format_duration(seconds), sim.step_count() - start_steps, sim.particles().size(),
-                           seconds > 0 ? double(sim.particles().size()) * double(sim.step_count() - start_steps) / seconds / 1e6 : 0.0));
+                           format_duration(seconds), sim.step_count() - start_steps, particles,
+                           seconds > 0 ? double(particles) * double(sim.step_count() - start_steps) / seconds / 1e6 : 0.0));
   if (complete) {
     std::map<std::string, std::string> state = experiment.state();
     recorder.checkpoint(state);  // the final state, so a later analysis or extension can start from it
   }
-  record_run_segment(folder, RunSegment{complete, stage_name(experiment.stage()), seconds,
-                                        sim.step_count() - start_steps, experiment.particle_steps_run(),
-                                        sim.particles().size()});
+  if (ranks) report_halo(recorder, *ranks, sim, sim.step_count() - start_steps);
+  on_root(ranks, [&] {
+    record_run_segment(folder, RunSegment{complete, stage_name(experiment.stage()), seconds,
+                                          sim.step_count() - start_steps, experiment.particle_steps_run(), particles});
+  });
   return complete;
 }
 

@@ -9,6 +9,8 @@
 
 namespace trapdem {
 
+class RunRanks;  // run_ranks.hpp
+
 struct FolderRunOptions {
   std::filesystem::path config_file;    // the configuration (TOML) to run; must be empty with resume_dir
   std::vector<std::string> overrides;   // "key.path=value", applied on top (with resume_dir: allowed_changes only)
@@ -19,6 +21,9 @@ struct FolderRunOptions {
   bool quiet = false;                   // no progress lines on the terminal (run.log still has them)
   double stop_after_seconds = 0.0;      // > 0: stop (with a checkpoint) after this much wall clock
   std::int64_t stop_at_step = 0;        // > 0: stop (with a checkpoint) at this engine step (tests)
+  // The ranks the run spans (src/parallel's MpiRunRanks under mpirun; every rank calls
+  // run_in_folder with the same options). Null: one process.
+  RunRanks* ranks = nullptr;
 };
 
 // Runs (or resumes) the experiment into its folder. Returns true if it finished, false if it
@@ -28,7 +33,9 @@ struct FolderRunOptions {
 // overrides) is compared with the one stored in the checkpoint, and a key that differs is refused
 // unless named in allowed_changes (then logged in run.log and recorded in resolved.toml). A folder
 // without checkpoint.h5 but with resolved.toml (stopped before its first checkpoint) is started
-// again from the beginning by a resume.
+// again from the beginning by a resume. On ranks the folder's files are rank 0's (run.log,
+// resolved.toml, snapshots.h5, trapdoor.csv, checkpoint.h5, run.json) and an error on one rank is
+// thrown on every rank (the lowest failing rank's).
 bool run_in_folder(const FolderRunOptions& options);
 
 }  // namespace trapdem

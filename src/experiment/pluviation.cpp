@@ -31,17 +31,20 @@ bool Hopper::finished(const Simulation&) const {
   return p.fill_height > 0.0 && surface_height() >= p.fill_height;
 }
 
-std::size_t Hopper::pour(Simulation& sim) {
+std::size_t Hopper::pour(Simulation& sim, Decomposition* ranks) {
   const ExperimentConfig& c = *config_;
   if (sim.time() < next_time_ || finished(sim)) return 0;
   const double elapsed = interval_;
   next_time_ = sim.time() + interval_;
 
-  // The band sits two diameters above the highest particle that is not falling in the stream.
+  // The band sits two diameters above the highest particle that is not falling in the stream
+  // (on ranks: the highest over every rank's own particles; a maximum does not depend on the order).
   const Particles& p = sim.particles();
+  const std::size_t owned = sim.owned_count();
   double top = 0.0;
-  for (std::size_t i = 0; i < p.size(); ++i)
+  for (std::size_t i = 0; i < owned; ++i)
     if (p.velocity[i].z > -0.5 * entry_speed_ || entry_speed_ == 0.0) top = std::max(top, p.position[i].z + p.radius[i]);
+  if (ranks) top = ranks->max(top);
   const double z = std::min(top + 2.0 * c.material.sizes.max_diameter(), c.box.height + 3.0 * c.material.sizes.max_diameter());
 
   // Sites on a grid across the box; a fresh generator per insertion keeps the pour reproducible
@@ -57,42 +60,65 @@ std::size_t Hopper::pour(Simulation& sim) {
   std::shuffle(sites.begin(), sites.end(), rng);
 
   // Particles already near the band (bouncing back up from the deposit, or the last layer not yet
-  // clear): a site that would overlap one of them is skipped in this insertion.
+  // clear): a site that would overlap one of them is skipped in this insertion. Each rank looks at
+  // its own particles; a site is free when it is free on every rank.
   const double d_max = c.material.sizes.max_diameter();
   std::vector<std::size_t> nearby;
-  for (std::size_t i = 0; i < p.size(); ++i)
+  for (std::size_t i = 0; i < owned; ++i)
     if (std::fabs(p.position[i].z - z) < 2.0 * d_max) nearby.push_back(i);
-  auto free_at = [&](const Vec3& x, double r) {
+  auto blocked = [&](const Vec3& x, double r) {
     for (std::size_t i : nearby) {
       Vec3 d = x - p.position[i];
       if (c.box.periodic_depth) d = sim.settings().domain.minimum_image(d);
       const double reach = r + p.radius[i] + 0.05 * d_max;
-      if (norm2(d) < reach * reach) return false;
+      if (norm2(d) < reach * reach) return 1.0;
     }
-    return true;
+    return 0.0;
   };
 
+  // Each site's draws (size, then the three jitters) in the order of the sites, whatever is
+  // inserted: the stream, and so the sizes and sites, are the same on any rank count. The sites
+  // are looked at in chunks (one reduction per chunk on ranks), as far as the pour goes.
   const double density = c.material.density;
   if (c.pluviation.flow_rate > 0.0) mass_budget_ += c.pluviation.flow_rate * elapsed;
   std::uniform_real_distribution<double> jitter(-0.04, 0.04);
+  constexpr std::size_t kChunk = 256;
+  std::vector<double> diameter, site_blocked;
+  std::vector<Vec3> site_x;
   std::size_t count = 0;
-  for (int site : sites) {
-    if (c.pluviation.count > 0 && inserted_ >= c.pluviation.count) break;
-    if (c.pluviation.fill_height > 0.0 && surface_height() >= c.pluviation.fill_height) break;
-    const double d = c.material.sizes.sample(rng);
-    const double mass = density * std::numbers::pi / 6.0 * d * d * d;
-    if (c.pluviation.flow_rate > 0.0 && mass_budget_ < mass) break;
-    const int ix = site % nx, iy = site / nx;
-    const double y0 = c.box.periodic_depth ? 0.5 * spacing_ : margin;
-    const Vec3 x{margin + ix * spacing_ + jitter(rng) * spacing_, y0 + iy * spacing_ + jitter(rng) * spacing_,
-                 z + jitter(rng) * spacing_};
-    if (!free_at(x, 0.5 * d)) continue;
-    const std::int64_t id = inserted_ + 1;
-    sim.add_particle(id, x, 0.5 * d, density, Vec3{0.0, 0.0, -entry_speed_});
-    if (c.pluviation.flow_rate > 0.0) mass_budget_ -= mass;
-    inserted_mass_ += mass;
-    ++inserted_;
-    ++count;
+  bool stop = false;
+  for (std::size_t first = 0; first < sites.size() && !stop; first += kChunk) {
+    const std::size_t last = std::min(sites.size(), first + kChunk);
+    diameter.clear();
+    site_x.clear();
+    site_blocked.clear();
+    for (std::size_t k = first; k < last; ++k) {
+      const double d = c.material.sizes.sample(rng);
+      const int ix = sites[k] % nx, iy = sites[k] / nx;
+      const double y0 = c.box.periodic_depth ? 0.5 * spacing_ : margin;
+      const Vec3 x{margin + ix * spacing_ + jitter(rng) * spacing_, y0 + iy * spacing_ + jitter(rng) * spacing_,
+                   z + jitter(rng) * spacing_};
+      diameter.push_back(d);
+      site_x.push_back(x);
+      site_blocked.push_back(blocked(x, 0.5 * d));
+    }
+    if (ranks) ranks->max(site_blocked.data(), int(site_blocked.size()));
+    for (std::size_t k = 0; k < diameter.size(); ++k) {
+      stop = (c.pluviation.count > 0 && inserted_ >= c.pluviation.count) ||
+             (c.pluviation.fill_height > 0.0 && surface_height() >= c.pluviation.fill_height);
+      if (stop) break;
+      const double d = diameter[k];
+      const double mass = density * std::numbers::pi / 6.0 * d * d * d;
+      stop = c.pluviation.flow_rate > 0.0 && mass_budget_ < mass;
+      if (stop) break;
+      if (site_blocked[k] > 0.0) continue;
+      const std::int64_t id = inserted_ + 1;
+      if (sim.owns_site(site_x[k])) sim.add_particle(id, site_x[k], 0.5 * d, density, Vec3{0.0, 0.0, -entry_speed_});
+      if (c.pluviation.flow_rate > 0.0) mass_budget_ -= mass;
+      inserted_mass_ += mass;
+      ++inserted_;
+      ++count;
+    }
   }
   // Sites ran out before the budget: the band cannot pass the flow rate asked for.
   if (c.pluviation.flow_rate > 0.0 && count == sites.size() && mass_budget_ > 0.0) {

@@ -9,6 +9,7 @@
 #include <map>
 #include <string>
 
+#include "dem/decomposition.hpp"
 #include "dem/simulation.hpp"
 #include "experiment/experiment_config.hpp"
 
@@ -18,8 +19,10 @@ class Hopper {
  public:
   explicit Hopper(const ExperimentConfig& config);
 
-  // Inserts the particles due by the simulation's current time. Returns how many it inserted.
-  std::size_t pour(Simulation& sim);
+  // Inserts the particles due by the simulation's current time. Returns how many it inserted. On
+  // a rank of a decomposition (`ranks`, the simulation's; collective) every rank draws the same
+  // sizes and sites and inserts those whose site it owns: the pour is the one-process pour.
+  std::size_t pour(Simulation& sim, Decomposition* ranks = nullptr);
   bool finished(const Simulation& sim) const;  // count reached, or the surface at the fill height
 
   std::int64_t inserted() const { return inserted_; }

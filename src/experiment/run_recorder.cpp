@@ -24,10 +24,13 @@ std::string format_duration(double s) {
   return fmt::format("{:.1f} h", s / 3600.0);
 }
 
-RunRecorder::RunRecorder(TrapdoorExperiment& experiment, RunFolder folder, RunLog& log, RunStopRules stop)
-    : experiment_(experiment), folder_(std::move(folder)), log_(log), stop_(stop) {
+RunRecorder::RunRecorder(TrapdoorExperiment& experiment, RunFolder folder, RunLog* log, RunStopRules stop,
+                         RunRanks* ranks)
+    : experiment_(experiment), folder_(std::move(folder)), log_(log), stop_(stop), ranks_(ranks) {
   started_ = last_checkpoint_ = now_seconds();
-  if (folder_.has_snapshots()) snapshots_ = list_snapshots(folder_.snapshots_h5()).size();
+  on_root(ranks_, [&] {
+    if (folder_.has_snapshots()) snapshots_ = list_snapshots(folder_.snapshots_h5()).size();
+  });
 }
 
 void RunRecorder::progress(const StageProgress& p) {
@@ -44,21 +47,27 @@ void RunRecorder::stage_finished(Stage stage, const std::string& summary) {
 
 void RunRecorder::snapshot_due(const std::string& label) {
   const Simulation& sim = experiment_.simulation();
-  const std::string name =
-      append_snapshot(folder_.snapshots_h5(), make_snapshot(sim.particles(), sim.time(), label,
-                                                            experiment_.trapdoor_displacement(), sim.step_count()));
+  const Particles gathered = ranks_ ? ranks_->gather(sim) : Particles{};
+  const Particles& particles = ranks_ ? gathered : sim.particles();
+  on_root(ranks_, [&] {
+    const std::string name =
+        append_snapshot(folder_.snapshots_h5(), make_snapshot(particles, sim.time(), label,
+                                                              experiment_.trapdoor_displacement(), sim.step_count()));
+    say(fmt::format("snapshot {} ({}, trapdoor at {:.2f} mm, {} particles)", name, label,
+                    experiment_.trapdoor_displacement() * 1e3, particles.size()));
+  });
   ++snapshots_;
-  say(fmt::format("snapshot {} ({}, trapdoor at {:.2f} mm, {} particles)", name, label,
-                  experiment_.trapdoor_displacement() * 1e3, sim.particles().size()));
 }
 
 void RunRecorder::ground_reaction_row(const GroundReactionRow&, const std::vector<GroundReactionRow>& rows) {
-  write_text_atomically(folder_.trapdoor_csv(), ground_reaction_csv(rows));
+  on_root(ranks_, [&] { write_text_atomically(folder_.trapdoor_csv(), ground_reaction_csv(rows)); });
 }
 
 bool RunRecorder::checkpoint_due() {
   if (++calls_ % 256 != 0 && !checkpoint_wanted_) return false;
-  return checkpoint_wanted_ || now_seconds() - last_checkpoint_ >= experiment_.config().output.checkpoint_interval;
+  if (checkpoint_wanted_) return true;
+  const bool due = now_seconds() - last_checkpoint_ >= experiment_.config().output.checkpoint_interval;
+  return ranks_ ? ranks_->broadcast(due) : due;  // rank 0's clock decides for all
 }
 
 void RunRecorder::checkpoint(const std::map<std::string, std::string>& state) {
@@ -69,16 +78,28 @@ void RunRecorder::checkpoint(const std::map<std::string, std::string>& state) {
     metadata[kConfiguration] = configuration_;
     metadata[kConfigurationDigest] = config_digest(configuration_);
   }
-  save_checkpoint(folder_.checkpoint_h5(), experiment_.simulation(), std::move(metadata));
+  if (ranks_)
+    ranks_->save_checkpoint(folder_.checkpoint_h5(), experiment_.simulation(), metadata);
+  else
+    save_checkpoint(folder_.checkpoint_h5(), experiment_.simulation(), std::move(metadata));
   last_checkpoint_ = now_seconds();
   checkpoint_wanted_ = false;
-  log_.note(fmt::format("checkpoint at t = {:.6f} s (step {}, stage {})", experiment_.simulation().time(),
-                        experiment_.simulation().step_count(), stage_name(experiment_.stage())));
+  if (log_)
+    log_->note(fmt::format("checkpoint at t = {:.6f} s (step {}, stage {})", experiment_.simulation().time(),
+                           experiment_.simulation().step_count(), stage_name(experiment_.stage())));
 }
 
 bool RunRecorder::stop_requested() {
-  if (stop_.signal && *stop_.signal != 0) return true;
   if (stop_.at_step > 0 && experiment_.simulation().step_count() >= stop_.at_step) return true;
+  if (ranks_) {
+    // A signal reaches the ranks at different steps and each rank has its own clock: every 64
+    // calls the ranks agree, so all stop (with a checkpoint) at the same step.
+    if (++stop_calls_ % 64 != 0) return false;
+    const bool local = (stop_.signal && *stop_.signal != 0) ||
+                       (stop_.after_seconds > 0.0 && now_seconds() - started_ >= stop_.after_seconds);
+    return ranks_->any(local);
+  }
+  if (stop_.signal && *stop_.signal != 0) return true;
   return stop_.after_seconds > 0.0 && (++stop_calls_ % 64 == 0) && now_seconds() - started_ >= stop_.after_seconds;
 }
 

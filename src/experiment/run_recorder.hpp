@@ -2,7 +2,9 @@
 // The observer that writes a run folder's files as the experiment reports its events: run.log
 // (and the terminal unless quiet), snapshots.h5, trapdoor.csv and checkpoint.h5 (every stage end
 // and every output.checkpoint_interval of wall clock); it asks the experiment to stop on a
-// signal, after a wall-clock budget or at a given step (tests).
+// signal, after a wall-clock budget or at a given step (tests). On ranks (RunRanks) the files are
+// rank 0's, written from the particles gathered there, and the decisions taken on a clock
+// (checkpoint, stop) are agreed on, so every rank checkpoints and stops at the same step.
 #include <atomic>
 #include <cstdint>
 #include <map>
@@ -11,6 +13,7 @@
 
 #include "experiment/run_folder.hpp"
 #include "experiment/run_log.hpp"
+#include "experiment/run_ranks.hpp"
 #include "experiment/trapdoor_experiment.hpp"
 
 namespace trapdem {
@@ -23,11 +26,15 @@ struct RunStopRules {
 
 class RunRecorder : public ExperimentObserver {
  public:
-  // Writes the run's lines to `log` (the folder's run.log, opened before the run by the caller).
-  RunRecorder(TrapdoorExperiment& experiment, RunFolder folder, RunLog& log, RunStopRules stop);
+  // Writes the run's lines to `log` (the folder's run.log, opened before the run by the caller; on
+  // ranks, rank 0's: null on the others).
+  RunRecorder(TrapdoorExperiment& experiment, RunFolder folder, RunLog* log, RunStopRules stop,
+              RunRanks* ranks = nullptr);
 
   // A line for run.log and, unless quiet, the terminal.
-  void say(const std::string& line) { log_.say(line); }
+  void say(const std::string& line) {
+    if (log_) log_->say(line);
+  }
 
   // The run's resolved configuration (run_identity.hpp: resolved_values), stored with its digest in
   // every checkpoint so that a resume can check it carries on the run that was started.
@@ -50,8 +57,9 @@ class RunRecorder : public ExperimentObserver {
  private:
   TrapdoorExperiment& experiment_;
   RunFolder folder_;
-  RunLog& log_;
+  RunLog* log_;
   RunStopRules stop_;
+  RunRanks* ranks_;
   double started_ = 0.0, last_checkpoint_ = 0.0;
   bool checkpoint_wanted_ = false;
   std::size_t snapshots_ = 0;       // in snapshots.h5

@@ -53,6 +53,16 @@ TrapdoorExperiment::TrapdoorExperiment(ExperimentConfig config) : config_(std::m
   start_stage(Stage::pluviation);
 }
 
+void TrapdoorExperiment::attach_decomposition(std::unique_ptr<Decomposition> decomposition) {
+  decomposition_ = decomposition.get();
+  sim_->set_decomposition(std::move(decomposition));
+}
+
+// The experiment removes no particle: every one the hopper inserted is in the box, on some rank.
+std::size_t TrapdoorExperiment::particle_count() const {
+  return decomposition_ ? std::size_t(hopper_.inserted()) : sim_->particles().size();
+}
+
 double TrapdoorExperiment::trapdoor_displacement() const { return -sim_->walls()[trapdoor_wall_].displacement.z; }
 
 void TrapdoorExperiment::install_gravity() {
@@ -138,7 +148,7 @@ bool TrapdoorExperiment::run(ExperimentObserver& observer) {
     }
     if (observer.checkpoint_due()) observer.checkpoint(state());
     advance(observer);
-    particle_steps_run_ += double(sim_->particles().size());
+    particle_steps_run_ += double(particle_count());
     if (sim_->step_count() % 200 == 0) report(observer, false);
   }
   report(observer, true);
@@ -149,7 +159,7 @@ bool TrapdoorExperiment::advance(ExperimentObserver& observer) {
   const double t = sim_->time() - stage_start_time_;
   switch (stage_) {
     case Stage::pluviation: {
-      hopper_.pour(*sim_);
+      hopper_.pour(*sim_, decomposition_);
       sim_->step();
       if (hopper_.finished(*sim_)) {
         observer.stage_finished(stage_, fmt::format("{} particles poured ({:.4g} kg), surface at about {:.1f} mm{}",
@@ -288,7 +298,7 @@ void TrapdoorExperiment::report(ExperimentObserver& observer, bool force) {
   }
   const double elapsed = now - clock_start_;
   const std::int64_t steps = sim_->step_count() - steps_at_clock_start_;
-  if (elapsed > 0.0) p.particle_steps_per_second = double(sim_->particles().size()) * double(steps) / elapsed;
+  if (elapsed > 0.0) p.particle_steps_per_second = double(particle_count()) * double(steps) / elapsed;
   if (stage_at_clock_start_ != stage_) {
     clock_start_ = now;
     steps_at_clock_start_ = sim_->step_count();

@@ -7,6 +7,7 @@
 #include <string>
 #include <vector>
 
+#include "dem/decomposition.hpp"
 #include "dem/simulation.hpp"
 #include "experiment/experiment_config.hpp"
 #include "experiment/ground_reaction.hpp"
@@ -47,6 +48,13 @@ class TrapdoorExperiment {
   // checkpoints first). Returns true when the experiment is complete.
   bool run(ExperimentObserver& observer);
 
+  // Runs the experiment as one rank of a decomposition (every rank builds the same experiment,
+  // then attaches its rank's decomposition before the first step; from then on run() and the
+  // stages are collective). Without one, one process as always.
+  void attach_decomposition(std::unique_ptr<Decomposition> decomposition);
+  // The particles in the box (on ranks: every rank's, the pour's count).
+  std::size_t particle_count() const;
+
   Simulation& simulation() { return *sim_; }
   const Simulation& simulation() const { return *sim_; }
   // Particle-steps (particles in the box, summed over steps) taken by run() calls of this object:
@@ -73,6 +81,7 @@ class TrapdoorExperiment {
 
   ExperimentConfig config_;
   std::unique_ptr<Simulation> sim_;
+  Decomposition* decomposition_ = nullptr;  // the simulation's, when it runs on ranks
   Hopper hopper_;
   Stage stage_ = Stage::pluviation;
   double stage_start_time_ = 0.0;      // s, simulated

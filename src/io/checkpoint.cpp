@@ -111,6 +111,84 @@ std::vector<WallState> read_walls(const Hdf5Group& g) {
   return walls;
 }
 
+void write_lists(const Hdf5Group& g, const Simulation::ListState& lists) {
+  const Hdf5Group pairs = g.create_group("pairs");
+  pairs.write_uint32s("first", lists.pairs.first);
+  pairs.write_uint32s("partner", lists.pairs.partner);
+  write_history(pairs, lists.pairs.history);
+
+  const Hdf5Group wall_list = g.create_group("wall_candidates");
+  wall_list.write_uint32s("first", lists.walls.first);
+  wall_list.write_uint32s("wall", lists.walls.wall);
+  wall_list.write_vec3s("force", lists.walls.force, "N");
+  write_history(wall_list, lists.walls.history);
+
+  const Hdf5Group build = g.create_group("build");
+  build.write_vec3s("position_at_build", lists.position_at_build, "m");
+  build.write_vec3s("wall_displacement_at_build", lists.wall_displacement_at_build, "m");
+}
+
+Simulation::ListState read_lists(const Hdf5Group& g) {
+  Simulation::ListState lists;
+  const Hdf5Group pairs = g.group("pairs");
+  lists.pairs.first = pairs.read_uint32s("first");
+  lists.pairs.partner = pairs.read_uint32s("partner");
+  lists.pairs.history = read_history(pairs);
+
+  const Hdf5Group wall_list = g.group("wall_candidates");
+  lists.walls.first = wall_list.read_uint32s("first");
+  lists.walls.wall = wall_list.read_uint32s("wall");
+  lists.walls.force = wall_list.read_vec3s("force");
+  lists.walls.history = read_history(wall_list);
+
+  const Hdf5Group build = g.group("build");
+  lists.position_at_build = build.read_vec3s("position_at_build");
+  lists.wall_displacement_at_build = build.read_vec3s("wall_displacement_at_build");
+  return lists;
+}
+
+// The contact histories by particle ids (a checkpoint of a run on several ranks).
+void write_histories(const Hdf5Group& g, const HistoryArchive& a) {
+  std::vector<std::int64_t> low, high, particle;
+  std::vector<std::uint32_t> wall;
+  std::vector<ContactHistory> pair_history, wall_history;
+  for (const auto& r : a.pairs) {
+    low.push_back(r.low);
+    high.push_back(r.high);
+    pair_history.push_back(r.history);
+  }
+  for (const auto& r : a.walls) {
+    particle.push_back(r.particle);
+    wall.push_back(r.wall);
+    wall_history.push_back(r.history);
+  }
+  const Hdf5Group pairs = g.create_group("pairs");
+  pairs.write_int64s("low_id", low);
+  pairs.write_int64s("high_id", high);
+  write_history(pairs, pair_history);
+  const Hdf5Group walls = g.create_group("walls");
+  walls.write_int64s("particle_id", particle);
+  walls.write_uint32s("wall", wall);
+  write_history(walls, wall_history);
+}
+
+HistoryArchive read_histories(const Hdf5Group& g) {
+  HistoryArchive a;
+  const Hdf5Group pairs = g.group("pairs"), walls = g.group("walls");
+  const std::vector<std::int64_t> low = pairs.read_int64s("low_id"), high = pairs.read_int64s("high_id");
+  const std::vector<ContactHistory> pair_history = read_history(pairs);
+  if (high.size() != low.size() || pair_history.size() != low.size())
+    throw FileError(fmt::format("{}: pair history columns differ in length", pairs.describe()));
+  for (std::size_t k = 0; k < low.size(); ++k) a.pairs.push_back({low[k], high[k], pair_history[k]});
+  const std::vector<std::int64_t> particle = walls.read_int64s("particle_id");
+  const std::vector<std::uint32_t> wall = walls.read_uint32s("wall");
+  const std::vector<ContactHistory> wall_history = read_history(walls);
+  if (wall.size() != particle.size() || wall_history.size() != particle.size())
+    throw FileError(fmt::format("{}: wall history columns differ in length", walls.describe()));
+  for (std::size_t k = 0; k < particle.size(); ++k) a.walls.push_back({particle[k], wall[k], wall_history[k]});
+  return a;
+}
+
 }  // namespace
 
 Checkpoint capture_checkpoint(const Simulation& simulation, std::map<std::string, std::string> metadata) {
@@ -138,23 +216,22 @@ void write_checkpoint(const std::filesystem::path& path, const Checkpoint& c) {
     file.set_int_attribute("rebuilds_since_reorder", c.lists.rebuilds_since_reorder);
 
     write_particles(file.create_group("particles"), c.particles);
-
-    const Hdf5Group pairs = file.create_group("pairs");
-    pairs.write_uint32s("first", c.lists.pairs.first);
-    pairs.write_uint32s("partner", c.lists.pairs.partner);
-    write_history(pairs, c.lists.pairs.history);
-
-    const Hdf5Group wall_list = file.create_group("wall_candidates");
-    wall_list.write_uint32s("first", c.lists.walls.first);
-    wall_list.write_uint32s("wall", c.lists.walls.wall);
-    wall_list.write_vec3s("force", c.lists.walls.force, "N");
-    write_history(wall_list, c.lists.walls.history);
-
-    const Hdf5Group build = file.create_group("build");
-    build.write_vec3s("position_at_build", c.lists.position_at_build, "m");
-    build.write_vec3s("wall_displacement_at_build", c.lists.wall_displacement_at_build, "m");
-
+    write_lists(file, c.lists);
     write_walls(file.create_group("walls"), c.walls);
+    if (c.histories) write_histories(file.create_group("histories_by_id"), *c.histories);
+    if (!c.ranks.empty()) {
+      const Hdf5Group ranks = file.create_group("ranks");
+      ranks.set_int_attribute("count", std::int64_t(c.ranks.size()));
+      for (std::size_t r = 0; r < c.ranks.size(); ++r) {
+        const RankState& rank = c.ranks[r];
+        const Hdf5Group g = ranks.create_group(std::to_string(r));
+        g.set_int_attribute("ghosts", std::int64_t(rank.ghosts));
+        g.set_int_attribute("rebuilds_since_reorder", rank.lists.rebuilds_since_reorder);
+        write_particles(g.create_group("particles"), rank.particles);
+        write_lists(g, rank.lists);
+        g.write_uint8s("decomposition", rank.decomposition);
+      }
+    }
 
     const Hdf5Group metadata = file.create_group("metadata");
     for (const auto& [key, value] : c.metadata) metadata.set_string_attribute(key, value);
@@ -179,29 +256,35 @@ Checkpoint read_checkpoint(const std::filesystem::path& path) {
 
   c.particles = read_particles(file.group("particles"));
 
-  const Hdf5Group pairs = file.group("pairs");
-  c.lists.pairs.first = pairs.read_uint32s("first");
-  c.lists.pairs.partner = pairs.read_uint32s("partner");
-  c.lists.pairs.history = read_history(pairs);
-
-  const Hdf5Group wall_list = file.group("wall_candidates");
-  c.lists.walls.first = wall_list.read_uint32s("first");
-  c.lists.walls.wall = wall_list.read_uint32s("wall");
-  c.lists.walls.force = wall_list.read_vec3s("force");
-  c.lists.walls.history = read_history(wall_list);
-
-  const Hdf5Group build = file.group("build");
-  c.lists.position_at_build = build.read_vec3s("position_at_build");
-  c.lists.wall_displacement_at_build = build.read_vec3s("wall_displacement_at_build");
+  const std::int64_t rebuilds_since_reorder = c.lists.rebuilds_since_reorder;
+  c.lists = read_lists(file);
+  c.lists.rebuilds_since_reorder = rebuilds_since_reorder;
 
   c.walls = read_walls(file.group("walls"));
+  if (file.has("histories_by_id")) c.histories = read_histories(file.group("histories_by_id"));
+  if (file.has("ranks")) {
+    const Hdf5Group ranks = file.group("ranks");
+    const std::int64_t count = ranks.int_attribute("count");
+    for (std::int64_t r = 0; r < count; ++r) {
+      const Hdf5Group g = ranks.group(std::to_string(r));
+      RankState rank;
+      rank.particles = read_particles(g.group("particles"));
+      rank.ghosts = std::size_t(g.int_attribute("ghosts"));
+      if (rank.ghosts > rank.particles.size())
+        throw FileError(fmt::format("{}: {} ghosts among {} particles", g.describe(), rank.ghosts, rank.particles.size()));
+      rank.lists = read_lists(g);
+      rank.lists.rebuilds_since_reorder = g.int_attribute("rebuilds_since_reorder");
+      rank.decomposition = g.read_uint8s("decomposition");
+      c.ranks.push_back(std::move(rank));
+    }
+  }
 
   const Hdf5Group metadata = file.group("metadata");
   for (const std::string& key : metadata.attribute_names()) c.metadata[key] = metadata.string_attribute(key);
   return c;
 }
 
-void restore_checkpoint(Simulation& simulation, Checkpoint c) {
+void restore_walls(Simulation& simulation, const Checkpoint& c) {
   const std::vector<Wall>& walls = simulation.walls();
   if (walls.size() != c.walls.size())
     throw InputError(fmt::format("checkpoint: it holds {} walls, the simulation has {}; build the simulation as the "
@@ -216,14 +299,18 @@ void restore_checkpoint(Simulation& simulation, Checkpoint c) {
     throw InputError(fmt::format("checkpoint: time step {} s differs from the simulation's {} s; the resumed run would "
                                  "not continue the checkpointed one",
                                  c.time_step, simulation.time_step()));
+  for (std::size_t k = 0; k < walls.size(); ++k)
+    simulation.restore_wall_state(k, c.walls[k].origin, c.walls[k].displacement, c.walls[k].force, c.walls[k].torque,
+                                  c.walls[k].current_velocity);
+}
+
+void restore_checkpoint(Simulation& simulation, Checkpoint c) {
+  restore_walls(simulation, c);
   const std::size_t n = c.particles.size();
   // Lists that do not match the particles: particles were added after the last step and the
   // next step rebuilds. Assigning the particles afterwards (particles_mutable) leaves them invalid.
   const bool lists_match = c.lists.position_at_build.size() == n && c.lists.pairs.first.size() == n + 1;
 
-  for (std::size_t k = 0; k < walls.size(); ++k)
-    simulation.restore_wall_state(k, c.walls[k].origin, c.walls[k].displacement, c.walls[k].force, c.walls[k].torque,
-                                  c.walls[k].current_velocity);
   // A checkpoint of a simulation that never stepped: the fresh one is already in that state, with
   // its set-up (initial forces) still to come.
   if (c.stats.steps == 0 && c.stats.rebuilds == 0) {
@@ -231,6 +318,10 @@ void restore_checkpoint(Simulation& simulation, Checkpoint c) {
     return;
   }
   simulation.particles_mutable() = std::move(c.particles);
+  if (c.histories) {
+    simulation.resume_from_histories(c.time, c.stats, std::move(*c.histories));
+    return;
+  }
   simulation.restore(c.time, c.stats, std::move(c.lists));
   if (!lists_match) simulation.particles_mutable();  // marks the lists for a rebuild at the next step
 }

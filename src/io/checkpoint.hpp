@@ -6,6 +6,7 @@
 // Layout: docs/output.md, "checkpoint.h5".
 #include <filesystem>
 #include <map>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -25,6 +26,15 @@ struct WallState {
   Vec3 current_velocity;   // m/s
 };
 
+// One rank's own state in a checkpoint of a run on several ranks: with it the rank continues bit
+// for bit on the same rank count.
+struct RankState {
+  Particles particles;              // the rank's owned particles, then its ghosts, in its order
+  std::size_t ghosts = 0;
+  Simulation::ListState lists;      // indices into `particles`
+  std::vector<std::uint8_t> decomposition;  // the decomposition's own state (src/parallel's format)
+};
+
 struct Checkpoint {
   Particles particles;
   Simulation::ListState lists;
@@ -33,6 +43,12 @@ struct Checkpoint {
   SimulationStats stats;
   std::vector<WallState> walls;
   std::map<std::string, std::string> metadata;  // the caller's: "stage" = "lowering", ...
+  // A run on several ranks (src/parallel writes it): `particles` holds every rank's owned
+  // particles in id order and `lists` is empty; the contact histories are kept by ids, so that a
+  // resume on any rank count (one process too) rebuilds the lists with them; `ranks` holds each
+  // rank's own state, for a resume on the same rank count.
+  std::optional<HistoryArchive> histories;
+  std::vector<RankState> ranks;
 };
 
 // Copies the simulation's state. Take it between steps (after step() or run()): a Simulation whose
@@ -54,6 +70,12 @@ Checkpoint read_checkpoint(const std::filesystem::path& path);
 // Puts the checkpoint into a Simulation constructed as the checkpointed one was (same settings,
 // laws and walls added in the same order, gravity and wall velocities set as functions of time).
 // Throws InputError if the walls or the time step differ (the resumed run would silently diverge).
+// A checkpoint with histories by ids (a run on several ranks) puts every particle into the
+// simulation and lets its next step rebuild the lists (on a decomposition: each rank keeps its
+// share, Simulation::resume_from_histories).
 void restore_checkpoint(Simulation& simulation, Checkpoint checkpoint);
+// The walls and time step of the checkpoint checked against the simulation's, and its wall states
+// put into it (the part of restore_checkpoint every rank count shares).
+void restore_walls(Simulation& simulation, const Checkpoint& checkpoint);
 
 }  // namespace trapdem

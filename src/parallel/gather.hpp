@@ -10,5 +10,12 @@ namespace trapdem {
 
 // Collective: every rank receives all ranks' owned particles, sorted by id.
 Particles gather_particles(const Simulation& sim, MPI_Comm comm);
+// Collective: rank 0 receives all ranks' owned particles, sorted by id (output); the others an
+// empty set.
+Particles gather_particles_on_root(const Simulation& sim, MPI_Comm comm);
+
+// Collective: every rank's bytes, rank after rank, on rank 0 (each rank's length in `lengths`
+// there); the others receive nothing.
+std::vector<char> gather_bytes_on_root(const std::vector<char>& mine, MPI_Comm comm, std::vector<std::size_t>* lengths = nullptr);
 
 }  // namespace trapdem

@@ -6,6 +6,7 @@
 #include <type_traits>
 #include <vector>
 
+#include "core/errors.hpp"
 #include "dem/particles.hpp"
 
 namespace trapdem {
@@ -64,8 +65,10 @@ class Unpacker {
   template <class T>
   std::vector<T> get() {
     std::uint64_t n = 0;
+    if (bytes_.size() - at_ < sizeof n) throw FileError("a message or checkpointed state ends before its data");
     std::memcpy(&n, bytes_.data() + at_, sizeof n);
     at_ += sizeof n;
+    if ((bytes_.size() - at_) / sizeof(T) < n) throw FileError("a message or checkpointed state ends before its data");
     std::vector<T> values(n);
     if (n > 0) std::memcpy(values.data(), bytes_.data() + at_, n * sizeof(T));
     at_ += n * sizeof(T);

@@ -7,6 +7,7 @@
 #include <fmt/format.h>
 
 #include "core/errors.hpp"
+#include "parallel/failure_agreement.hpp"
 #include "parallel/particle_record.hpp"
 
 namespace trapdem {
@@ -351,7 +352,37 @@ void SlabDecomposition::agree_on_failure(const std::string& message) {
   MPI_Bcast(&length, 1, MPI_UINT64_T, first, comm_);
   std::string text = rank_ == first ? message : std::string(length, ' ');
   MPI_Bcast(text.data(), int(length), MPI_CHAR, first, comm_);
+  note_agreed_failure();
   throw SimulationError(fmt::format("rank {} of {}: {}", first, ranks_, text));
+}
+
+std::vector<std::uint8_t> SlabDecomposition::save_state() const {
+  Packer packer;
+  packer.put(bounds_);
+  packer.put(std::vector<std::int64_t>{balance_at_next_rebuild_ ? 1 : 0, rebalances_, std::int64_t(received_[kLeft]),
+                                       std::int64_t(received_[kRight]), std::int64_t(owned_)});
+  packer.put(send_[kLeft]);
+  packer.put(send_[kRight]);
+  const std::vector<char>& bytes = packer.bytes();
+  return {bytes.begin(), bytes.end()};
+}
+
+void SlabDecomposition::restore_state(const std::vector<std::uint8_t>& state) {
+  const std::vector<char> bytes(state.begin(), state.end());
+  Unpacker unpacker(bytes);
+  std::vector<double> bounds = unpacker.get<double>();
+  const std::vector<std::int64_t> counts = unpacker.get<std::int64_t>();
+  if (bounds.size() != std::size_t(ranks_) + 1 || counts.size() != 5)
+    throw InputError(fmt::format("slab decomposition: a checkpointed state of {} boundaries for {} ranks",
+                                 bounds.size(), ranks_));
+  bounds_ = std::move(bounds);
+  balance_at_next_rebuild_ = counts[0] != 0;
+  rebalances_ = counts[1];
+  received_[kLeft] = std::size_t(counts[2]);
+  received_[kRight] = std::size_t(counts[3]);
+  owned_ = std::size_t(counts[4]);
+  send_[kLeft] = unpacker.get<std::uint32_t>();
+  send_[kRight] = unpacker.get<std::uint32_t>();
 }
 
 SlabDecomposition& decompose_in_slabs(Simulation& sim, MPI_Comm comm, SlabSettings settings) {

@@ -44,6 +44,11 @@ class SlabDecomposition final : public Decomposition {
   int rank() const override { return rank_; }
   int ranks() const override { return ranks_; }
 
+  // The state between steps (boundaries, the ghosts sent and received), for a checkpoint from
+  // which this rank continues bit for bit; restore_state takes it on the same rank count.
+  std::vector<std::uint8_t> save_state() const;
+  void restore_state(const std::vector<std::uint8_t>& state);
+
   const std::vector<double>& bounds() const { return bounds_; }  // R + 1 values, m
   std::int64_t rebalances() const { return rebalances_; }
 
