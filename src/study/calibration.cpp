@@ -13,6 +13,7 @@
 #include "io/text_file.hpp"
 #include "plot/error_surface.hpp"
 #include "experiment/run_folder.hpp"
+#include "experiment/run_record.hpp"
 #include "study/run_comparison.hpp"
 #include "study/study_definition.hpp"
 #include "study/study_runner.hpp"
@@ -167,23 +168,45 @@ VariedKey parse_vary(const std::string& text) {
   return v;
 }
 
-Calibration calibrate(const CalibrateOptions& o) {
+CalibrationGrid calibration_grid(const CalibrateOptions& o) {
   if (o.vary.empty()) throw InputError("trapdem calibrate: give at least one --vary KEY=V1,V2,...");
-  Calibration result;
+  CalibrationGrid grid;
   for (const std::string& text : o.vary) {
     VariedKey k = parse_vary(text);
-    for (const VariedKey& other : result.keys)
+    for (const VariedKey& other : grid.keys)
       if (other.key == k.key) throw InputError(fmt::format("--vary: the key {} is varied twice", k.key));
-    result.keys.push_back(std::move(k));
+    grid.keys.push_back(std::move(k));
   }
   if (!fs::exists(fs::path(o.target) / "piv.h5") && !fs::is_regular_file(o.target))
     throw InputError(fmt::format("--target {}: no piv.h5 there (run `trapdem piv ... --out {}` first)", o.target, o.target));
-  const StudyDefinition study = calibration_study(o, result.keys);
+  grid.study = calibration_study(o, grid.keys);
+  grid.out = o.out.empty() ? fs::path("trapdem-out") / grid.study.name : fs::path(o.out);
+  return grid;
+}
+
+Calibration calibrate(const CalibrateOptions& o) {
+  const CalibrationGrid calibration = calibration_grid(o);
+  Calibration result;
+  result.keys = calibration.keys;
+  result.out = calibration.out;
+  const StudyDefinition& study = calibration.study;
   const StudyScale& scale = study.scales.front();
-  result.out = o.out.empty() ? fs::path("trapdem-out") / study.name : fs::path(o.out);
-  // A study's folder rules: resumable, a changed case refused, another study's folder refused.
-  // Its cases name no preset (the scale's base is the file), so no preset folder is needed.
-  if (!run_study_in_folder(study, scale, result.out, StudyRunSettings{{}, o.threads, o.quiet})) return result;
+  if (o.collect) {
+    // The grid ran elsewhere (a Slurm array): rank it only when every case is there.
+    if (!holds_study(result.out)) throw InputError(fmt::format("--collect: {} holds no calibration", result.out.string()));
+    claim_study_folder(study, scale, result.out);
+    std::string missing;
+    for (const StudyCase& c : study.cases)
+      if (!run_finished(RunFolder(case_directory(result.out, c))))
+        missing += (missing.empty() ? "" : ", ") + c.name;
+    if (!missing.empty())
+      throw InputError(fmt::format("--collect: the grid in {} is not complete ({} not finished: see --status); "
+                                   "submit or run it again to resume them, then rank", result.out.string(), missing));
+  } else if (!run_study_in_folder(study, scale, result.out, StudyRunSettings{{}, o.threads, o.quiet})) {
+    // A study's folder rules: resumable, a changed case refused, another study's folder refused.
+    // Its cases name no preset (the scale's base is the file), so no preset folder is needed.
+    return result;
+  }
   result.complete = true;
 
   const auto grid = grid_indices(result.keys);
