@@ -9,6 +9,7 @@
 
 #include "core/length_text.hpp"
 #include "core/errors.hpp"
+#include "core/trimmed.hpp"
 #include "io/atomic_file.hpp"
 #include "io/text_file.hpp"
 #include "plot/error_surface.hpp"
@@ -23,11 +24,6 @@ namespace fs = std::filesystem;
 namespace trapdem {
 
 namespace {
-
-std::string trim(const std::string& s) {
-  const auto a = s.find_first_not_of(" \t"), b = s.find_last_not_of(" \t");
-  return a == std::string::npos ? "" : s.substr(a, b - a + 1);
-}
 
 // A value as part of a folder name: quotes dropped, anything else unsafe as '-'.
 std::string name_part(const std::string& value) {
@@ -150,15 +146,15 @@ plot::ErrorSurface error_surface(const Calibration& c, const std::vector<std::ve
 
 VariedKey parse_vary(const std::string& text) {
   const auto eq = text.find('=');
-  if (eq == std::string::npos || trim(text.substr(0, eq)).empty())
+  if (eq == std::string::npos || trimmed(text.substr(0, eq)).empty())
     throw InputError(fmt::format("--vary '{}': expected KEY=V1,V2,... (e.g. contact.rolling_friction=0.1,0.2)", text));
   VariedKey v;
-  v.key = trim(text.substr(0, eq));
+  v.key = trimmed(text.substr(0, eq));
   std::size_t start = eq + 1;
   while (start <= text.size()) {
     std::size_t end = text.find(',', start);
     if (end == std::string::npos) end = text.size();
-    const std::string value = trim(text.substr(start, end - start));
+    const std::string value = trimmed(text.substr(start, end - start));
     if (value.empty()) throw InputError(fmt::format("--vary '{}': an empty value", text));
     if (std::find(v.values.begin(), v.values.end(), value) != v.values.end())
       throw InputError(fmt::format("--vary '{}': the value {} is given twice", text, value));

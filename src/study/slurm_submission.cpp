@@ -7,6 +7,7 @@
 #include <fmt/format.h>
 
 #include "core/errors.hpp"
+#include "core/trimmed.hpp"
 #include "experiment/run_folder.hpp"
 #include "experiment/run_record.hpp"
 #include "io/atomic_file.hpp"
@@ -19,11 +20,6 @@ namespace fs = std::filesystem;
 namespace trapdem {
 
 namespace {
-
-std::string trimmed(const std::string& s) {
-  const auto a = s.find_first_not_of(" \t\r\n"), b = s.find_last_not_of(" \t\r\n");
-  return a == std::string::npos ? "" : s.substr(a, b - a + 1);
-}
 
 // What a failed Slurm command said, on one line for a message.
 std::string said(const ProcessResult& r) {
