@@ -296,10 +296,9 @@ TEST_F(SlurmCluster, BadOptionsAreRefusedBeforeAnythingIsQueued) {
 
 TEST_F(SlurmCluster, CalibrationGridIsSubmittedAsAnArray) {
   const fs::path dir = scratch("calibrate");
-  const fs::path base = write_file(dir / "base.toml", "");
   // A configuration file of the tiny preset's values; the target a PIV folder (not read before the ranking).
-  fs::copy_file(fs::path(TRAPDEM_EXECUTABLE).parent_path().parent_path().parent_path() / "presets" / "tiny.toml", base,
-                fs::copy_options::overwrite_existing);
+  const fs::path base = dir / "base.toml";
+  fs::copy_file(fs::path(TRAPDEM_SOURCE_DIR) / "presets" / "tiny.toml", base, fs::copy_options::overwrite_existing);
   fs::create_directories(dir / "piv");
   write_file(dir / "piv" / "piv.h5", "");
   const fs::path out = dir / "out";
