@@ -16,6 +16,7 @@
 #include "experiment/run_folder.hpp"
 #include "experiment/run_record.hpp"
 #include "io/text_file.hpp"
+#include "study/calibration.hpp"
 #include "study/slurm_options.hpp"
 #include "study/slurm_script.hpp"
 #include "study/slurm_submission.hpp"
@@ -327,6 +328,74 @@ TEST(StudyStatus, AFolderWithoutAStudyIsAnError) {
     ADD_FAILURE() << "no error";
   } catch (const InputError& e) {
     EXPECT_NE(std::string(e.what()).find("holds no study"), std::string::npos) << e.what();
+  }
+  fs::remove_all(dir);
+}
+
+// The report job's --collect: no trapdoor run starts; the element tests still missing run
+// (report.element_test, shrunk as in the replicate study test: ~10 s on one thread), and the report
+// is written with the unfinished run left out and named in study.log.
+TEST(Collect, RunsTheElementTestsAndReportsWithoutStartingARun) {
+  const fs::path dir = scratch("collect");
+  write(dir / "study.toml", R"(name = "collect"
+[scales.test]
+preset = "tiny"
+[scales.test.set]
+contact.restitution = 0.9
+[report]
+element_test = true
+[report.element]
+particles = 200
+confining = [1.0e4]
+max_axial_strain = 0.05
+critical_state_window = 0.02
+row_strain = 0.005
+[cases.only]
+label = "Only"
+)");
+  const fs::path out = dir / "out";
+  app::StudyOptions o;
+  o.file = (dir / "study.toml").string();
+  o.out = out.string();
+  o.threads = 1;
+  o.quiet = true;
+  o.collect = true;
+  EXPECT_THROW(app::run_study(o), InputError);  // no study there yet
+  const StudyDefinition study = load_study(dir / "study.toml");
+  fs::create_directories(out);
+  claim_study_folder(study, study.scale("test"), out);
+  ASSERT_EQ(app::run_study(o), 0);
+  EXPECT_FALSE(fs::exists(out / "cases" / "only" / "run.log"));  // no run started
+  EXPECT_TRUE(fs::exists(out / "cases" / "only" / "element" / "element.json"));
+  EXPECT_TRUE(fs::exists(out / "report" / "summary.json"));
+  const std::string log = read_text_file(out / "study.log");
+  EXPECT_NE(log.find("collect: only has not finished (not started); the report leaves it out"), std::string::npos) << log;
+  EXPECT_NE(log.find("only element test: finished"), std::string::npos) << log;
+  fs::remove_all(dir);
+}
+
+// A calibration's --collect ranks only a complete grid: otherwise it names the cases missing.
+TEST(Collect, CalibrationNamesTheCasesNotFinished) {
+  const fs::path dir = scratch("collect-calibration");
+  fs::copy_file(fs::path(TRAPDEM_SOURCE_DIR) / "presets" / "tiny.toml", dir / "base.toml");
+  write(dir / "piv" / "piv.h5", "");
+  CalibrateOptions o;
+  o.base = (dir / "base.toml").string();
+  o.vary = {"contact.kinetic_friction=0.2,0.5"};
+  o.target = (dir / "piv").string();
+  o.at = "2mm";
+  o.out = (dir / "out").string();
+  o.collect = true;
+  const CalibrationGrid grid = calibration_grid(o);
+  fs::create_directories(grid.out);
+  claim_study_folder(grid.study, grid.study.scales.front(), grid.out);
+  fs::create_directories(grid.out / "cases" / "kinetic_friction-0.2");
+  record_run_segment(RunFolder(grid.out / "cases" / "kinetic_friction-0.2"), RunSegment{true, "done", 1.0, 1, 1.0, 1});
+  try {
+    calibrate(o);
+    ADD_FAILURE() << "an incomplete grid was ranked";
+  } catch (const InputError& e) {
+    EXPECT_NE(std::string(e.what()).find("(kinetic_friction-0.5 not finished"), std::string::npos) << e.what();
   }
   fs::remove_all(dir);
 }
