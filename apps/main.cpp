@@ -177,8 +177,12 @@ int main(int argc, char** argv) {
       ->check(thread_count);
   study_cmd->add_flag("--quiet", study.quiet, "Runs' progress lines only in their run.log");
   study_cmd->add_flag("--report-only", study.report_only, "Run nothing: report on the finished cases");
+  study_cmd->add_flag("--collect", study.collect, "No trapdoor run: the element tests still missing, then the report (a Slurm submission's report job)");
+  study_cmd->add_flag("--status", study.status, "Run nothing: where each run stands (not started, running, finished, failed)");
+  trapdem::app::add_submit_options(*study_cmd, study.submit);
 
-  trapdem::CalibrateOptions calibrate;
+  trapdem::app::CalibrateCommand calibrate_command;
+  trapdem::CalibrateOptions& calibrate = calibrate_command.calibrate;
   auto* cal = app.add_subcommand("calibrate", "Run a parameter grid as a study and rank it against PIV (compare)");
   cal->add_option("base", calibrate.base, "Configuration file (TOML) the grid varies")->required()->check(CLI::ExistingFile);
   cal->add_option("--vary", calibrate.vary, "KEY=V1,V2,... (repeatable; every combination runs)")->required();
@@ -190,6 +194,9 @@ int main(int argc, char** argv) {
   cal->add_option("--threads", calibrate.threads, "OpenMP threads per run (default: all cores)")
       ->check(thread_count);
   cal->add_flag("--quiet", calibrate.quiet, "Runs' progress lines only in their run.log");
+  cal->add_flag("--collect", calibrate.collect, "Run nothing: rank the grid once every case has finished (a Slurm submission's report job)");
+  cal->add_flag("--status", calibrate_command.status, "Run nothing: where each case stands");
+  trapdem::app::add_submit_options(*cal, calibrate_command.submit);
 
   trapdem::app::ElementOptions element;
   auto* el = app.add_subcommand("element", "Virtual element test: friction angles of a configuration's particles (docs/element.md)");
@@ -222,7 +229,7 @@ int main(int argc, char** argv) {
     if (cmp_cmd->parsed()) return trapdem::app::run_compare(compare);
     if (sink->parsed()) return trapdem::app::run_sinkhole(sinkhole);
     if (study_cmd->parsed()) return trapdem::app::run_study(study);
-    if (cal->parsed()) return trapdem::app::run_calibrate(calibrate);
+    if (cal->parsed()) return trapdem::app::run_calibrate(calibrate_command);
     if (el->parsed()) return trapdem::app::run_element(element);
     if (dep->parsed()) return trapdem::app::run_deposit(deposit);
   } catch (const trapdem::InputError& e) {

@@ -9,10 +9,12 @@
 
 #include "core/length_text.hpp"
 #include "core/errors.hpp"
+#include "core/trimmed.hpp"
 #include "io/atomic_file.hpp"
 #include "io/text_file.hpp"
 #include "plot/error_surface.hpp"
 #include "experiment/run_folder.hpp"
+#include "experiment/run_record.hpp"
 #include "study/run_comparison.hpp"
 #include "study/study_definition.hpp"
 #include "study/study_runner.hpp"
@@ -22,11 +24,6 @@ namespace fs = std::filesystem;
 namespace trapdem {
 
 namespace {
-
-std::string trim(const std::string& s) {
-  const auto a = s.find_first_not_of(" \t"), b = s.find_last_not_of(" \t");
-  return a == std::string::npos ? "" : s.substr(a, b - a + 1);
-}
 
 // A value as part of a folder name: quotes dropped, anything else unsafe as '-'.
 std::string name_part(const std::string& value) {
@@ -149,15 +146,15 @@ plot::ErrorSurface error_surface(const Calibration& c, const std::vector<std::ve
 
 VariedKey parse_vary(const std::string& text) {
   const auto eq = text.find('=');
-  if (eq == std::string::npos || trim(text.substr(0, eq)).empty())
+  if (eq == std::string::npos || trimmed(text.substr(0, eq)).empty())
     throw InputError(fmt::format("--vary '{}': expected KEY=V1,V2,... (e.g. contact.rolling_friction=0.1,0.2)", text));
   VariedKey v;
-  v.key = trim(text.substr(0, eq));
+  v.key = trimmed(text.substr(0, eq));
   std::size_t start = eq + 1;
   while (start <= text.size()) {
     std::size_t end = text.find(',', start);
     if (end == std::string::npos) end = text.size();
-    const std::string value = trim(text.substr(start, end - start));
+    const std::string value = trimmed(text.substr(start, end - start));
     if (value.empty()) throw InputError(fmt::format("--vary '{}': an empty value", text));
     if (std::find(v.values.begin(), v.values.end(), value) != v.values.end())
       throw InputError(fmt::format("--vary '{}': the value {} is given twice", text, value));
@@ -167,23 +164,45 @@ VariedKey parse_vary(const std::string& text) {
   return v;
 }
 
-Calibration calibrate(const CalibrateOptions& o) {
+CalibrationGrid calibration_grid(const CalibrateOptions& o) {
   if (o.vary.empty()) throw InputError("trapdem calibrate: give at least one --vary KEY=V1,V2,...");
-  Calibration result;
+  CalibrationGrid grid;
   for (const std::string& text : o.vary) {
     VariedKey k = parse_vary(text);
-    for (const VariedKey& other : result.keys)
+    for (const VariedKey& other : grid.keys)
       if (other.key == k.key) throw InputError(fmt::format("--vary: the key {} is varied twice", k.key));
-    result.keys.push_back(std::move(k));
+    grid.keys.push_back(std::move(k));
   }
   if (!fs::exists(fs::path(o.target) / "piv.h5") && !fs::is_regular_file(o.target))
     throw InputError(fmt::format("--target {}: no piv.h5 there (run `trapdem piv ... --out {}` first)", o.target, o.target));
-  const StudyDefinition study = calibration_study(o, result.keys);
+  grid.study = calibration_study(o, grid.keys);
+  grid.out = o.out.empty() ? fs::path("trapdem-out") / grid.study.name : fs::path(o.out);
+  return grid;
+}
+
+Calibration calibrate(const CalibrateOptions& o) {
+  const CalibrationGrid calibration = calibration_grid(o);
+  Calibration result;
+  result.keys = calibration.keys;
+  result.out = calibration.out;
+  const StudyDefinition& study = calibration.study;
   const StudyScale& scale = study.scales.front();
-  result.out = o.out.empty() ? fs::path("trapdem-out") / study.name : fs::path(o.out);
-  // A study's folder rules: resumable, a changed case refused, another study's folder refused.
-  // Its cases name no preset (the scale's base is the file), so no preset folder is needed.
-  if (!run_study_in_folder(study, scale, result.out, StudyRunSettings{{}, o.threads, o.quiet})) return result;
+  if (o.collect) {
+    // The grid ran elsewhere (a Slurm array): rank it only when every case is there.
+    if (!holds_study(result.out)) throw InputError(fmt::format("--collect: {} holds no calibration", result.out.string()));
+    claim_study_folder(study, scale, result.out);
+    std::string missing;
+    for (const StudyCase& c : study.cases)
+      if (!run_finished(RunFolder(case_directory(result.out, c))))
+        missing += (missing.empty() ? "" : ", ") + c.name;
+    if (!missing.empty())
+      throw InputError(fmt::format("--collect: the grid in {} is not complete ({} not finished: see --status); "
+                                   "submit or run it again to resume them, then rank", result.out.string(), missing));
+  } else if (!run_study_in_folder(study, scale, result.out, StudyRunSettings{{}, o.threads, o.quiet})) {
+    // A study's folder rules: resumable, a changed case refused, another study's folder refused.
+    // Its cases name no preset (the scale's base is the file), so no preset folder is needed.
+    return result;
+  }
   result.complete = true;
 
   const auto grid = grid_indices(result.keys);

@@ -7,6 +7,8 @@
 #include <string>
 #include <vector>
 
+#include "study/study_definition.hpp"
+
 namespace trapdem {
 
 struct CalibrateOptions {
@@ -19,6 +21,7 @@ struct CalibrateOptions {
   std::string piv_trapdoor;          // "X,Z": trapdoor centre in the PIV coordinates (see compare)
   int threads = 0;
   bool quiet = false;
+  bool collect = false;              // run nothing: rank the finished grid (the Slurm report job, issue 16)
 };
 
 struct VariedKey {
@@ -45,7 +48,18 @@ struct Calibration {
   bool complete = false;               // false: interrupted before every case ran
 };
 
-// Runs, scores and writes calibration.csv, best.toml, error_surface.png and the study report.
+// Runs, scores and writes calibration.csv, best.toml, error_surface.png and the study report. With
+// options.collect nothing runs: every case must have finished (InputError naming those that have not).
 Calibration calibrate(const CalibrateOptions& options);
+
+// The grid as the study it runs (one scale, "base": the configuration; a case per combination) and
+// its folder, after the options' checks (--vary parsed, --target holding piv.h5): what
+// `--submit slurm` and `--status` work on.
+struct CalibrationGrid {
+  std::vector<VariedKey> keys;
+  StudyDefinition study;
+  std::filesystem::path out;
+};
+CalibrationGrid calibration_grid(const CalibrateOptions& options);
 
 }  // namespace trapdem

@@ -139,18 +139,17 @@ void claim_study_folder(const StudyDefinition& study, const StudyScale& scale, c
   write_text_atomically(record, j.dump() + "\n");
 }
 
-bool run_study_cases(const StudyDefinition& study, const StudyScale& scale, const fs::path& out,
-                     const StudyRunSettings& settings) {
-  const bool quiet = settings.quiet;
-  // Every run's configuration first, and each against what its folder holds: a typo in the fourth
-  // case, or a case changed since it ran, should not wait for three runs.
+fs::path case_base_file(const CaseRun& run, const fs::path& preset_directory) {
+  return base_file(run.recipe, preset_directory);
+}
+
+std::vector<std::vector<CaseRun>> checked_study_runs(const StudyDefinition& study, const StudyScale& scale,
+                                                     const fs::path& out, const fs::path& preset_directory) {
   std::vector<std::vector<CaseRun>> runs;
-  std::size_t total = 0;
   for (const StudyCase& c : study.cases) {
-    runs.push_back(case_runs(study, c, scale, out, settings.preset_directory));
-    total += runs.back().size();
+    runs.push_back(case_runs(study, c, scale, out, preset_directory));
     for (const CaseRun& r : runs.back()) {
-      const std::string resolved = resolved_recipe(r.recipe, settings.preset_directory, c.name, nullptr);
+      const std::string resolved = resolved_recipe(r.recipe, preset_directory, c.name, nullptr);
       const RunFolder run(r.dir);
       if (!run.has_checkpoint() && !run_finished(run)) continue;
       const std::string there = fs::exists(run.resolved_toml()) ? read_text_file(run.resolved_toml()) : "";
@@ -161,9 +160,20 @@ bool run_study_cases(const StudyDefinition& study, const StudyScale& scale, cons
     }
     if (study.report.element_test) {  // its keys checked now too
       const ConfigRecipe recipe = case_recipe(c, scale);
-      case_element_test(c, base_file(recipe, settings.preset_directory), recipe, study.report);
+      case_element_test(c, base_file(recipe, preset_directory), recipe, study.report);
     }
   }
+  return runs;
+}
+
+bool run_study_cases(const StudyDefinition& study, const StudyScale& scale, const fs::path& out,
+                     const StudyRunSettings& settings) {
+  const bool quiet = settings.quiet;
+  // Every run's configuration first, and each against what its folder holds: a typo in the fourth
+  // case, or a case changed since it ran, should not wait for three runs.
+  const std::vector<std::vector<CaseRun>> runs = checked_study_runs(study, scale, out, settings.preset_directory);
+  std::size_t total = 0;
+  for (const auto& case_runs_of : runs) total += case_runs_of.size();
 
   std::size_t counted = 0;
   for (std::size_t k = 0; k < study.cases.size(); ++k) {
@@ -198,22 +208,24 @@ bool run_study_cases(const StudyDefinition& study, const StudyScale& scale, cons
       }
       log_study_line(out, fmt::format("{}: finished", counter), quiet);
     }
-    if (study.report.element_test) {
-      const ConfigRecipe recipe = case_recipe(c, scale);
-      const CaseElementTest test =
-          case_element_test(c, base_file(recipe, settings.preset_directory), recipe, study.report);
-      const std::string title = fmt::format("{} element test", c.name);
-      const fs::path dir = element_directory(out, c);
-      if (element_test_finished(test, dir)) {
-        log_study_line(out, fmt::format("{}: finished before, skipped", title), quiet);
-      } else {
-        log_study_line(out, fmt::format("{}: running ({} particles)", title, test.setup.settings.particles), quiet);
-        run_case_element_test(test, dir, settings.threads);
-        log_study_line(out, fmt::format("{}: finished", title), quiet);
-      }
-    }
+    if (study.report.element_test) run_case_element_test_once(study, c, scale, out, settings);
   }
   return true;
+}
+
+void run_case_element_test_once(const StudyDefinition& study, const StudyCase& c, const StudyScale& scale,
+                                const fs::path& out, const StudyRunSettings& settings) {
+  const ConfigRecipe recipe = case_recipe(c, scale);
+  const CaseElementTest test = case_element_test(c, base_file(recipe, settings.preset_directory), recipe, study.report);
+  const std::string title = fmt::format("{} element test", c.name);
+  const fs::path dir = element_directory(out, c);
+  if (element_test_finished(test, dir)) {
+    log_study_line(out, fmt::format("{}: finished before, skipped", title), settings.quiet);
+  } else {
+    log_study_line(out, fmt::format("{}: running ({} particles)", title, test.setup.settings.particles), settings.quiet);
+    run_case_element_test(test, dir, settings.threads);
+    log_study_line(out, fmt::format("{}: finished", title), settings.quiet);
+  }
 }
 
 namespace {

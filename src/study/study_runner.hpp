@@ -41,6 +41,22 @@ std::vector<CaseRun> case_runs(const StudyDefinition& study, const StudyCase& st
 // The case's element test (report.element_test): its folder, cases/<name>/element/.
 std::filesystem::path element_directory(const std::filesystem::path& out, const StudyCase& study_case);
 
+// Every case's runs (case_runs), each configuration resolved and checked, each against what its
+// folder holds (InputError for a folder holding a run of another configuration), and the element
+// test's keys (report.element_test): what a study checks before its first run, whether it runs
+// the cases here or submits them (study/slurm_submission.hpp).
+std::vector<std::vector<CaseRun>> checked_study_runs(const StudyDefinition& study, const StudyScale& scale,
+                                                     const std::filesystem::path& out,
+                                                     const std::filesystem::path& preset_directory);
+
+// The configuration file a run starts from (its preset's file, or its configuration file).
+std::filesystem::path case_base_file(const CaseRun& run, const std::filesystem::path& preset_directory);
+
+// The case's element test (report.element_test) into element_directory, unless a finished test of
+// the same configuration is there; logged in study.log.
+void run_case_element_test_once(const StudyDefinition& study, const StudyCase& study_case, const StudyScale& scale,
+                                const std::filesystem::path& out, const StudyRunSettings& settings);
+
 // Runs (or resumes, or skips) every case of `study` at `scale` into out/cases/<name>. Returns false
 // if a run was interrupted (SIGINT/SIGTERM: its checkpoint is written). Throws InputError if a case's
 // folder holds a run of another configuration.
