@@ -5,6 +5,7 @@
 
 #include <cmath>
 #include <fstream>
+#include <memory>
 #include <stdexcept>
 #include <string>
 
@@ -33,6 +34,18 @@ void replay(cairo_surface_t* recording, cairo_surface_t* target, double scale, c
   cairo_destroy(cr);
   check(status, what);
   cairo_surface_flush(target);
+}
+
+// A surface destroyed at the end of its scope, whatever happens.
+struct SurfaceDestroy {
+  void operator()(cairo_surface_t* s) const { cairo_surface_destroy(s); }
+};
+using Surface = std::unique_ptr<cairo_surface_t, SurfaceDestroy>;
+
+// Finishes a vector surface (its file or stream complete) and checks for errors.
+void finish(cairo_surface_t* s, const char* what) {
+  cairo_surface_finish(s);
+  check(cairo_surface_status(s), what);
 }
 
 cairo_status_t append_to_string(void* closure, const unsigned char* data, unsigned int length) {
@@ -67,47 +80,29 @@ void Canvas::write(const std::filesystem::path& path) const {
   write_atomically(path, [&](const std::filesystem::path& temporary) {
     switch (format) {
       case FigureFormat::png: {
-        const int w = static_cast<int>(std::lround(width_ * kPngPixelsPerUnit));
-        const int h = static_cast<int>(std::lround(height_ * kPngPixelsPerUnit));
-        cairo_surface_t* image = cairo_image_surface_create(CAIRO_FORMAT_RGB24, w, h);
-        try {
-          replay(surface_, image, kPngPixelsPerUnit, "PNG");
-          check(cairo_surface_write_to_png(image, temporary.c_str()), "PNG");
-        } catch (...) {
-          cairo_surface_destroy(image);
-          throw;
-        }
-        cairo_surface_destroy(image);
+        const Surface image(cairo_image_surface_create(CAIRO_FORMAT_RGB24,
+                                                       static_cast<int>(std::lround(width_ * kPngPixelsPerUnit)),
+                                                       static_cast<int>(std::lround(height_ * kPngPixelsPerUnit))));
+        replay(surface_, image.get(), kPngPixelsPerUnit, "PNG");
+        check(cairo_surface_write_to_png(image.get(), temporary.c_str()), "PNG");
         break;
       }
       case FigureFormat::pdf: {
-        cairo_surface_t* pdf = cairo_pdf_surface_create(temporary.c_str(), width_, height_);
-        try {
-          if (!title_.empty()) cairo_pdf_surface_set_metadata(pdf, CAIRO_PDF_METADATA_TITLE, title_.c_str());
-          cairo_pdf_surface_set_metadata(pdf, CAIRO_PDF_METADATA_CREATOR, "trapdem");
-          replay(surface_, pdf, 1.0, "PDF");
-          cairo_surface_finish(pdf);
-          check(cairo_surface_status(pdf), "PDF");
-        } catch (...) {
-          cairo_surface_destroy(pdf);
-          throw;
-        }
-        cairo_surface_destroy(pdf);
+        const Surface pdf(cairo_pdf_surface_create(temporary.c_str(), width_, height_));
+        if (!title_.empty()) cairo_pdf_surface_set_metadata(pdf.get(), CAIRO_PDF_METADATA_TITLE, title_.c_str());
+        cairo_pdf_surface_set_metadata(pdf.get(), CAIRO_PDF_METADATA_CREATOR, "trapdem");
+        replay(surface_, pdf.get(), 1.0, "PDF");
+        finish(pdf.get(), "PDF");
         break;
       }
       case FigureFormat::svg: {
         // Written to memory first, to put the title in as text: cairo draws text as glyph outlines.
         std::string svg;
-        cairo_surface_t* s = cairo_svg_surface_create_for_stream(append_to_string, &svg, width_, height_);
-        try {
-          replay(surface_, s, 1.0, "SVG");
-          cairo_surface_finish(s);
-          check(cairo_surface_status(s), "SVG");
-        } catch (...) {
-          cairo_surface_destroy(s);
-          throw;
+        {
+          const Surface s(cairo_svg_surface_create_for_stream(append_to_string, &svg, width_, height_));
+          replay(surface_, s.get(), 1.0, "SVG");
+          finish(s.get(), "SVG");
         }
-        cairo_surface_destroy(s);
         if (!title_.empty()) {
           const std::size_t open = svg.find("<svg");
           const std::size_t end = open == std::string::npos ? open : svg.find('>', open);

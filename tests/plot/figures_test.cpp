@@ -6,6 +6,7 @@
 
 #include <cmath>
 #include <filesystem>
+#include <functional>
 #include <numbers>
 
 #include <fmt/format.h>
@@ -37,35 +38,46 @@ PngInfo inspect(const fs::path& path) {
   return {image.width, image.height, image.colours()};
 }
 
+// Frames of a jittered lattice of 2 mm particles over a 0.1 x 0.06 m specimen, each node moved by
+// w(p, delta) vertically.
+AnalysisFrame lattice_frame(double delta, const std::function<double(Point2, double)>& w) {
+  static const auto nodes = test::jittered_hex_lattice(0.001, 0.099, 0.001, 0.06, 0.002, 0.2, 5);
+  AnalysisFrame f{delta == 0 ? "000000" : "000001", delta, {}};
+  for (std::size_t k = 0; k < nodes.size(); ++k) {
+    const Point2 p = nodes[k];
+    f.snapshot.id.push_back(static_cast<std::int64_t>(k));
+    f.snapshot.position.push_back({p.x, 0.009, p.z + w(p, delta)});
+    f.snapshot.radius.push_back(0.001);
+  }
+  return f;
+}
+
 // A small analysed specimen: a settling block between two bands leaning out at 15 degrees.
 AnalysisResult synthetic_result(const std::string& name) {
   const double d = 0.002, B = 0.03, xc = 0.05, angle = 15.0 * std::numbers::pi / 180.0, sigma = 2.0 * d;
-  const auto nodes = test::jittered_hex_lattice(0.001, 0.099, 0.001, 0.06, d, 0.2, 5);
-  auto frame = [&](double delta) {
-    AnalysisFrame f{delta == 0 ? "000000" : "000001", delta, {}};
-    for (std::size_t k = 0; k < nodes.size(); ++k) {
-      const Point2 p = nodes[k];
-      const double nl = (p.x - xc + 0.5 * B) * std::cos(angle) + p.z * std::sin(angle);
-      const double nr = -(p.x - xc - 0.5 * B) * std::cos(angle) + p.z * std::sin(angle);
-      const double w = -delta * 0.25 * std::erfc(-nl / sigma / std::sqrt(2.0)) * std::erfc(-nr / sigma / std::sqrt(2.0));
-      f.snapshot.id.push_back(static_cast<std::int64_t>(k));
-      f.snapshot.position.push_back({p.x, 0.009, p.z + w});
-      f.snapshot.radius.push_back(0.5 * d);
-    }
-    return f;
+  const auto w = [&](Point2 p, double delta) {
+    const double nl = (p.x - xc + 0.5 * B) * std::cos(angle) + p.z * std::sin(angle);
+    const double nr = -(p.x - xc - 0.5 * B) * std::cos(angle) + p.z * std::sin(angle);
+    return -delta * 0.25 * std::erfc(-nl / sigma / std::sqrt(2.0)) * std::erfc(-nr / sigma / std::sqrt(2.0));
   };
   SpecimenGeometry g{name, 0.1, 0.01, 0.07, {xc, B, 0.0}};
   AnalysisSettings s;
   s.incremental = true;
-  return analyze_frames({frame(0.0), frame(0.003), frame(0.006)}, g, s);
+  return analyze_frames({lattice_frame(0.0, w), lattice_frame(0.003, w), lattice_frame(0.006, w)}, g, s);
+}
+
+// An empty folder under the temporary directory.
+fs::path scratch_dir(const std::string& name) {
+  const fs::path dir = fs::temp_directory_path() / name;
+  fs::remove_all(dir);
+  fs::create_directories(dir);
+  return dir;
 }
 
 }  // namespace
 
 TEST(Figures, SpecimenFiguresAreWrittenAndNotBlank) {
-  const fs::path dir = fs::temp_directory_path() / "trapdem-figures-test";
-  fs::remove_all(dir);
-  fs::create_directories(dir);
+  const fs::path dir = scratch_dir("trapdem-figures-test");
   const AnalysisResult r = synthetic_result("synthetic");
   plot::write_strain_map(dir / "strain.png", r, plot::StrainKind::total, 0.0, 450);
   plot::write_strain_map(dir / "strain_inc.png", r, plot::StrainKind::incremental, 0.0, 450);
@@ -143,9 +155,7 @@ std::string pdf_utf16_hex(const std::string& ascii) {
 }  // namespace
 
 TEST(FigureFormats, TheExtensionPicksPngSvgOrPdf) {
-  const fs::path dir = fs::temp_directory_path() / "trapdem-figure-formats";
-  fs::remove_all(dir);
-  fs::create_directories(dir);
+  const fs::path dir = scratch_dir("trapdem-figure-formats");
   const AnalysisResult r = synthetic_result("synthetic");
   for (const char* ext : {".png", ".svg", ".pdf", ".PDF"}) plot::write_strain_map(dir / ("strain" + std::string(ext)), r, plot::StrainKind::total);
   const std::string png = bytes_of(dir / "strain.png"), svg = bytes_of(dir / "strain.svg"), pdf = bytes_of(dir / "strain.pdf");
@@ -171,20 +181,10 @@ TEST(FigureFormats, TheExtensionPicksPngSvgOrPdf) {
 // A specimen compressed vertically on the left of x = 50 mm (w = -e z: the area shrinks, εv > 0)
 // and stretched on the right (w = +e z: εv < 0, dilation).
 TEST(VolumetricStrainMap, CompressionRedDilationBlue) {
-  const double d = 0.002, e = 0.02;
-  const auto nodes = test::jittered_hex_lattice(0.001, 0.099, 0.001, 0.06, d, 0.2, 5);
-  auto frame = [&](double delta) {
-    AnalysisFrame f{delta == 0 ? "000000" : "000001", delta, {}};
-    for (std::size_t k = 0; k < nodes.size(); ++k) {
-      const Point2 p = nodes[k];
-      const double w = (p.x < 0.05 ? -1.0 : 1.0) * e * p.z * delta / 0.003;
-      f.snapshot.id.push_back(static_cast<std::int64_t>(k));
-      f.snapshot.position.push_back({p.x, 0.009, p.z + w});
-      f.snapshot.radius.push_back(0.5 * d);
-    }
-    return f;
-  };
-  const AnalysisResult r = analyze_frames({frame(0.0), frame(0.003)}, {"signs", 0.1, 0.01, 0.07, {0.05, 0.03, 0.0}}, {});
+  const double e = 0.02;
+  const auto w = [&](Point2 p, double delta) { return (p.x < 0.05 ? -1.0 : 1.0) * e * p.z * delta / 0.003; };
+  const AnalysisResult r = analyze_frames({lattice_frame(0.0, w), lattice_frame(0.003, w)},
+                                          {"signs", 0.1, 0.01, 0.07, {0.05, 0.03, 0.0}}, {});
   const fs::path png = fs::temp_directory_path() / "trapdem-volumetric.png";
   const plot::PlotFrame f = plot::write_volumetric_strain_map(png, r);
   const test::PngImage image = test::read_png(png);
