@@ -7,7 +7,9 @@
 
 #include "analysis/analysis_output.hpp"
 #include "core/errors.hpp"
+#include "plot/figure_format.hpp"
 #include "plot/specimen_figures.hpp"
+#include "study/ground_reaction_overlay.hpp"
 
 namespace fs = std::filesystem;
 
@@ -28,6 +30,18 @@ int run_analyze(const AnalyzeOptions& o) {
 
 int run_figure(const FigureOptions& o) {
   if (o.dirs.empty()) throw InputError("trapdem figure: give one or more run folders");
+  const fs::path out = o.out.empty() ? fs::path(o.grc ? "grc.png" : "panel.png") : fs::path(o.out);
+  plot::figure_format_of(out);  // a bad extension fails before the work
+  if (!o.labels.empty() && o.labels.size() != o.dirs.size()) {
+    throw InputError(fmt::format("--labels: {} labels for {} run folders (give one per folder, in order)",
+                                 o.labels.size(), o.dirs.size()));
+  }
+  if (o.grc) {
+    const std::vector<fs::path> dirs(o.dirs.begin(), o.dirs.end());
+    const auto legend = write_ground_reaction_overlay(out, dirs, o.labels);
+    fmt::print("ground reaction curves of {} runs written to {}\n", legend.size(), out.string());
+    return 0;
+  }
   std::vector<AnalysisResult> results;
   for (const auto& dir : o.dirs) {
     AnalyzeOptions a;
@@ -44,8 +58,8 @@ int run_figure(const FigureOptions& o) {
     pointers.push_back(&r);
     if (!(o.max_strain > 0.0)) vmax = std::max(vmax, plot::auto_strain_scale(r));
   }
-  plot::write_strain_panel_png(o.out, pointers, vmax);
-  fmt::print("panel of {} runs (gamma_max scale 0 to {:g}) written to {}\n", results.size(), vmax, o.out);
+  plot::write_strain_panel(out, pointers, o.labels, vmax);
+  fmt::print("panel of {} runs (gamma_max scale 0 to {:g}) written to {}\n", results.size(), vmax, out.string());
   return 0;
 }
 

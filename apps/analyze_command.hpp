@@ -2,7 +2,8 @@
 // `trapdem analyze DIR`: strain fields, vertical displacement grid, shear-band metrics and zone of
 // influence of a run, written to DIR/analysis/ (fields.h5 + fields.xmf, metrics.json, figures),
 // and a short metrics table on the terminal. `trapdem figure DIR...`: a panel of several runs'
-// shear strain maps with one shared colour scale.
+// shear strain maps with one shared colour scale; `trapdem figure --grc DIR...`: their ground
+// reaction curves on one chart. The --out file's extension picks the format (png, svg, pdf).
 #include <filesystem>
 #include <string>
 #include <vector>
@@ -16,7 +17,9 @@ int run_analyze(const AnalyzeOptions& options);
 
 struct FigureOptions {
   std::vector<std::string> dirs;
-  std::string out = "panel.png";
+  std::string out;                         // empty: panel.png (grc.png with --grc)
+  bool grc = false;                        // the ground reaction curves instead of the strain panel
+  std::vector<std::string> labels;         // legend/panel titles, one per run (default: the runs' names)
   std::string at;
   std::string reference = "0mm";
   std::string view = "front";

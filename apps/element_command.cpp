@@ -93,7 +93,7 @@ int run_element(const ElementOptions& o) {
   }
   // Table 1's glass beads: phi'_cs 15.7 deg and phi'_peak 16.8 deg as reference lines.
   const double to_rad = std::numbers::pi / 180.0;
-  plot::write_element_figure_png(
+  plot::write_element_figure(
       out / "element.png", fmt::format("{} test: {}", to_string(e.kind), setup.name),
       fmt::format("{} particles, I = {:.2g}; dotted: glass beads (seed Table 1) phi' 15.7 and 16.8 deg", e.particles,
                   e.inertial_number),

@@ -91,12 +91,20 @@ int main(int argc, char** argv) {
   an->add_option("--config", analyze.config, "Geometry (TOML with [box], [trapdoor]; default DIR/resolved.toml)");
   an->add_option("--out", analyze.out, "Output folder (default DIR/analysis)");
   an->add_flag("--no-figures", analyze.no_figures, "Fields and metrics only");
+  an->add_option("--format", analyze.format, "Figure format: png (default), svg or pdf")
+      ->check(CLI::IsMember({"png", "svg", "pdf"}, CLI::ignore_case));
+  auto* an_levels = an->add_option("--contour-levels", analyze.contour_levels,
+                                   "Settlement contour levels, e.g. 0.5mm,1mm,2mm (default: automatic)");
+  an->add_option("--contour-step", analyze.contour_step, "Settlement contour step, e.g. 1mm")->excludes(an_levels);
   an->add_flag("--quiet", analyze.quiet, "No metrics table on the terminal");
 
   trapdem::app::FigureOptions figure;
-  auto* fig = app.add_subcommand("figure", "Panel of several runs' shear strain maps with one colour scale");
+  auto* fig = app.add_subcommand("figure", "Panel of several runs' shear strain maps with one colour scale, or (--grc) their ground reaction curves");
   fig->add_option("dirs", figure.dirs, "Run folders")->required();
-  fig->add_option("--out", figure.out, "PNG file (default panel.png)");
+  fig->add_option("--out", figure.out, "Figure file; .png, .svg or .pdf picks the format (default panel.png, grc.png with --grc)");
+  fig->add_flag("--grc", figure.grc, "The runs' ground reaction curves (trapdoor.csv) on one chart");
+  fig->add_option("--labels", figure.labels, "Panel titles / legend entries, one per run (default: the runs' names)")
+      ->delimiter(',');
   fig->add_option("--at", figure.at, "Trapdoor displacement, e.g. 80mm (default: each run's last snapshot)");
   fig->add_option("--reference", figure.reference, "Reference trapdoor displacement (default 0mm)");
   fig->add_option("--view", figure.view, "front or all")->check(CLI::IsMember({"front", "all"}));
@@ -128,6 +136,12 @@ int main(int argc, char** argv) {
       ->check(CLI::IsMember({"affine", "projective"}));
   piv_cmd->add_option("--threads", piv.threads, "OpenMP threads (default: all cores)")->check(thread_count);
   piv_cmd->add_flag("--no-figures", piv.no_figures, "Displacements, piv.h5 and strain only");
+  piv_cmd->add_option("--format", piv.format, "Figure format: png (default), svg or pdf")
+      ->check(CLI::IsMember({"png", "svg", "pdf"}, CLI::ignore_case));
+  auto* piv_levels = piv_cmd->add_option("--contour-levels", piv.contour_levels,
+                                         "Settlement contour levels in the plot unit (mm with --scale), e.g. 0.5,1,2");
+  piv_cmd->add_option("--contour-step", piv.contour_step, "Settlement contour step in the plot unit, e.g. 1")
+      ->excludes(piv_levels);
   piv_cmd->add_flag("--quiet", piv.quiet, "No progress lines");
 
   trapdem::app::SynthOptions synth;

@@ -1,5 +1,6 @@
 #include "piv_command.hpp"
 
+#include <algorithm>
 #include <chrono>
 #include <cmath>
 #include <filesystem>
@@ -18,6 +19,7 @@
 #include "piv/piv_output.hpp"
 #include "piv/run_piv.hpp"
 #include "piv/speckle_synthesis.hpp"
+#include "plot/figure_format.hpp"
 #include "study/run_analysis.hpp"
 
 namespace fs = std::filesystem;
@@ -123,6 +125,19 @@ int run_piv_command(const PivOptions& o) {
       }
     }
   }
+  PivFigureInput figure_options;
+  figure_options.format = plot::parse_figure_format(o.format, "--format");
+  if (!o.contour_levels.empty() && !o.contour_step.empty()) {
+    throw InputError("--contour-levels and --contour-step exclude each other");
+  }
+  if (!o.contour_levels.empty()) {
+    const auto count = static_cast<std::size_t>(std::count(o.contour_levels.begin(), o.contour_levels.end(), ',')) + 1;
+    figure_options.settlement_levels.list = parse_numbers(o.contour_levels, count, "--contour-levels");
+  }
+  if (!o.contour_step.empty()) {
+    figure_options.settlement_levels.step = parse_numbers(o.contour_step, 1, "--contour-step")[0];
+    if (!(figure_options.settlement_levels.step > 0.0)) throw InputError("--contour-step must be positive");
+  }
   std::vector<fs::path> files(o.images.begin(), o.images.end());
   const fs::path out = o.out;
   const auto start = std::chrono::steady_clock::now();
@@ -151,7 +166,7 @@ int run_piv_command(const PivOptions& o) {
   write_piv_h5(out / "piv.h5", r, o.images, model, unit, strain);
   std::vector<fs::path> written{out / "displacements.csv", out / "piv.h5"};
   if (!o.no_figures) {
-    PivFigureInput in;
+    PivFigureInput in = figure_options;
     in.result = &r;
     in.strain = &strain;
     in.first_image = read_for_figure(o.images.front());
@@ -283,18 +298,25 @@ int run_render_command(const RenderOptions& o) {
     });
     files.push_back(path.string());
   }
-  const std::string piv_line = fmt::format("trapdem piv {}/*.png --out {}/piv --scale {:g} --origin {:g},{:g}",
-                                           out.string(), out.string(), view.mm_per_px, view.origin_x_mm,
-                                           view.origin_z_mm);
+  // PIV from the start of lowering: the images before it (pour, settling, spin-up) are not listed.
+  std::vector<double> displacements;
+  for (const Snapshot& s : snapshots) displacements.push_back(s.trapdoor_displacement);
+  const std::size_t first = lowering_start(displacements);
+  std::string listed;
+  for (std::size_t k = first; k < files.size(); ++k) listed += files[k] + " ";
+  const std::string piv_line = fmt::format("trapdem piv {}--out {}/piv --scale {:g} --origin {:g},{:g}", listed,
+                                           out.string(), view.mm_per_px, view.origin_x_mm, view.origin_z_mm);
   write_text_atomically(
       out / "scale.txt",
       fmt::format("# trapdem render: orthographic view through the front window (y = {:g} mm), particles with centres\n"
                   "# within one diameter of it. Pixel (col, row) has its centre at image (x, y) = (col, row), x right,\n"
                   "# y down; model x = origin_x_mm + mm_per_px * x, z (up) = origin_z_mm - mm_per_px * y.\n"
                   "mm_per_px = {:g}\norigin_x_mm = {:g}\norigin_z_mm = {:g}\nwidth_px = {}\nheight_px = {}\n"
-                  "# PIV with the model coordinates:\n# {}\n",
+                  "lowering_starts_at = {}\n"
+                  "# PIV with the model coordinates, from the start of lowering (image {} of {}, {}):\n# {}\n",
                   g.box_depth * 1e3, view.mm_per_px, view.origin_x_mm, view.origin_z_mm, view.width, view.height,
-                  piv_line));
+                  fs::path(files[first]).filename().string(), first + 1, files.size(),
+                  fs::path(files[first]).filename().string(), piv_line));
   fmt::print("{} images {}x{} px at {:g} px/mm in {} (scale.txt: pixel (0,0) is model ({:g}, {:g}) mm)\n  PIV: {}\n",
              files.size(), view.width, view.height, o.px_per_mm, out.string(), view.origin_x_mm, view.origin_z_mm,
              piv_line);
@@ -304,9 +326,7 @@ int run_render_command(const RenderOptions& o) {
     s.subset_size = o.subset > 0 ? o.subset : std::max(16, static_cast<int>(std::round(3.0 * dmean / 2.0)) * 2);
     s.step = s.subset_size / 2;
     s.threads = o.threads;
-    // Reference: the last snapshot before the trapdoor moves (the analysis' 0 mm).
-    std::size_t first = 0;
-    while (first + 1 < snapshots.size() && snapshots[first + 1].trapdoor_displacement <= 1e-6) ++first;
+    // Reference: the start of lowering (the analysis' 0 mm), as the suggested PIV.
     std::vector<fs::path> paths(files.begin() + static_cast<std::ptrdiff_t>(first), files.end());
     if (paths.size() < 2) {
       fmt::print("check: no snapshot after the trapdoor started to move\n");

@@ -21,6 +21,9 @@ struct PivOptions {
   std::string fit = "projective";  // affine | projective, for --control-points
   int threads = 0;
   bool no_figures = false;
+  std::string format = "png";    // figures: png | svg | pdf
+  std::string contour_levels;    // settlement contour levels "0.5,1,2" in the plot unit; empty: automatic
+  std::string contour_step;      // or a step "1"
   bool quiet = false;
 };
 

@@ -16,6 +16,7 @@ class AnalysisFolder {
   std::filesystem::path fields_xmf() const { return dir_ / "fields.xmf"; }  // its XDMF companion (ParaView)
   std::filesystem::path metrics_json() const { return dir_ / "metrics.json"; }
   std::filesystem::path shear_strain_png() const { return dir_ / "shear_strain.png"; }
+  std::filesystem::path volumetric_strain_png() const { return dir_ / "volumetric_strain.png"; }
   std::filesystem::path shear_strain_incremental_png() const { return dir_ / "shear_strain_incremental.png"; }
   std::filesystem::path vertical_displacement_png() const { return dir_ / "vertical_displacement.png"; }
   std::filesystem::path particles_png() const { return dir_ / "particles.png"; }

@@ -148,4 +148,10 @@ CameraAgreement compare_with_particles(const PivResult& r, std::size_t image, co
   return out;
 }
 
+std::size_t lowering_start(const std::vector<double>& displacement) {
+  std::size_t first = 0;
+  while (first + 1 < displacement.size() && displacement[first + 1] <= 1e-6) ++first;
+  return first;
+}
+
 }  // namespace trapdem

@@ -53,6 +53,12 @@ std::vector<bool> front_layer(const Snapshot& snapshot, const CameraSettings& se
 // The snapshot as an 8-bit grey image of view.width x view.height.
 cv::Mat render_front_view(const Snapshot& snapshot, const CameraView& view, const CameraSettings& settings);
 
+// The snapshot at which lowering starts, by its index in a run's snapshots (given their trapdoor
+// displacements, m): the last one before the trapdoor first moved (more than 1 um), the analysis'
+// 0 mm reference. PIV from there measures the lowering only: the images before it (pour, settling,
+// spin-up) would add their settlement to the strain. 0 when the trapdoor never moved.
+std::size_t lowering_start(const std::vector<double>& trapdoor_displacements);
+
 // PIV displacement of image `image` against the particles: for each valid subset, the mean
 // displacement (first -> current snapshot, matched by id) of the front-layer particles of the
 // first snapshot whose image-1 centre lies inside the subset square.

@@ -209,14 +209,16 @@ std::vector<fs::path> write_piv_figures(const fs::path& dir, const PivFigureInpu
   if (!in.result || !in.strain || in.result->image_count() < 2) return {};
   const plot::PivFigureData data = piv_figure_data(in);
   fs::create_directories(dir);
-  const std::vector<fs::path> out{dir / "shear_strain.png", dir / "shear_strain_incremental.png",
-                                  dir / "vertical_displacement.png", dir / "vectors.png",
-                                  dir / "correlation_quality.png"};
-  plot::write_piv_strain_png(out[0], data, false);
-  plot::write_piv_strain_png(out[1], data, true);
-  plot::write_piv_vertical_displacement_png(out[2], data);
-  plot::write_piv_vectors_png(out[3], data);
-  plot::write_piv_quality_png(out[4], data);
+  std::vector<fs::path> out;
+  for (const char* name :
+       {"shear_strain", "shear_strain_incremental", "vertical_displacement", "vectors", "correlation_quality"}) {
+    out.push_back(plot::with_format(dir / name, in.format));
+  }
+  plot::write_piv_strain_figure(out[0], data, false);
+  plot::write_piv_strain_figure(out[1], data, true);
+  plot::write_piv_vertical_displacement_figure(out[2], data, in.settlement_levels);
+  plot::write_piv_vectors_figure(out[3], data);
+  plot::write_piv_quality_figure(out[4], data);
   return out;
 }
 

@@ -12,6 +12,8 @@
 #include "piv/piv_result.hpp"
 #include "piv/piv_strain.hpp"
 #include "piv/pixel_to_model.hpp"
+#include "plot/contour_plot.hpp"
+#include "plot/figure_format.hpp"
 
 namespace trapdem {
 
@@ -38,10 +40,12 @@ struct PivFigureInput {
   PixelToModel to_plot;  // pixels -> figure coordinates (model units z up; or px with y flipped)
   std::string unit;      // "mm", or "px"
   std::string title;     // first line of each figure's title
+  plot::FigureFormat format = plot::FigureFormat::png;
+  plot::ContourLevels settlement_levels;  // of the vertical displacement figure, plot units
 };
 
-// Writes shear_strain.png, shear_strain_incremental.png, vertical_displacement.png, vectors.png and
-// correlation_quality.png to `dir`, drawn by src/plot/piv_figures.hpp from the result converted to
+// Writes shear_strain, shear_strain_incremental, vertical_displacement, vectors and
+// correlation_quality (.png, .svg or .pdf: input.format) to `dir`, drawn by src/plot/piv_figures.hpp from the result converted to
 // plain data; returns the files written.
 std::vector<std::filesystem::path> write_piv_figures(const std::filesystem::path& dir, const PivFigureInput& input);
 

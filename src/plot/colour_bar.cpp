@@ -46,8 +46,13 @@ void draw_colour_bar(cairo_t* cr, Rect bar, const ColourMap& map, double lo, dou
     widest = std::max(widest, draw_text(cr, format_tick(v, step), bar.right() + 8.0, y, label).w);
   }
   if (!style.label.empty()) {
+    // Along the bar, on as many lines as its length needs.
     TextStyle title{.size = style.font_size, .angle_deg = 90.0, .h = HAlign::centre, .v = VAlign::top};
-    draw_text(cr, style.label, bar.right() + 14.0 + widest, bar.y + 0.5 * bar.h, title);
+    double x = bar.right() + 14.0 + widest;
+    for (const std::string& line : wrap_text(cr, style.label, title, std::max(bar.h, 4.0 * style.font_size))) {
+      draw_text(cr, line, x, bar.y + 0.5 * bar.h, title);
+      x += 1.15 * style.font_size;
+    }
   }
   cairo_restore(cr);
 }

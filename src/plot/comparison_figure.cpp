@@ -35,15 +35,19 @@ GridField settlement(GridField g) {
 
 }  // namespace
 
-void write_comparison_png(const std::filesystem::path& path, const ComparisonFigure& fig, int width) {
-  const double top = 130.0, right = 40.0, left = 95.0, bottom = 80.0;
+void write_comparison_figure(const std::filesystem::path& path, const ComparisonFigure& fig, int width) {
+  // Title block, then the legend (three rows), then the map.
+  const double right = 16.0, left = 4.4 * kFontSmall, bottom = 3.5 * kFontSmall, row = 1.3 * kFontSmall;
+  const double legend_top = 10.0 + title_height(fig.title, fig.subtitle, kFontTitle, width - 20.0) + 4.0;
+  const double top = legend_top + 3.0 * row + 8.0;
   const double travel = std::max(0.0, fig.trapdoor_travel);
   const Range1 xr{fig.box_left * mm, fig.box_right * mm};
   const double zspan = std::max(fig.box_height, 1e-6);
   const Range1 zr{-(travel + 0.04 * zspan) * mm, (fig.box_height + 0.02 * zspan) * mm};
   const double plot_w = width - left - right;
-  const double plot_h = std::min(1000.0, plot_w * zr.span() / xr.span());
-  Canvas canvas(width, static_cast<int>(top + plot_h + bottom + 10.0));
+  const double plot_h = std::min(1.2 * width, plot_w * zr.span() / xr.span());
+  Canvas canvas(width, static_cast<int>(std::ceil(top + plot_h + bottom + 6.0)));
+  canvas.set_title(fig.title);
   cairo_t* cr = canvas.cr();
   const Rect plot = fit_equal_aspect({left, top, plot_w, plot_h}, xr, zr);
   const PlotFrame f(plot, xr, zr);
@@ -70,7 +74,7 @@ void write_comparison_png(const std::filesystem::path& path, const ComparisonFig
   const double hw = 0.5 * fig.trapdoor_width;
   cairo_set_line_cap(cr, CAIRO_LINE_CAP_BUTT);
   cairo_set_source_rgb(cr, 0.25, 0.25, 0.25);
-  cairo_set_line_width(cr, 4.0);
+  cairo_set_line_width(cr, 3.0);
   cairo_move_to(cr, f.px(fig.box_left * mm) + 2, f.py(fig.box_height * mm));
   cairo_line_to(cr, f.px(fig.box_left * mm) + 2, f.py(0.0) + 2);
   cairo_line_to(cr, f.px(-hw * mm), f.py(0.0) + 2);
@@ -88,29 +92,27 @@ void write_comparison_png(const std::filesystem::path& path, const ComparisonFig
   cairo_stroke(cr);
   cairo_set_dash(cr, nullptr, 0, 0.0);
   set_colour(cr, trapdoor_colour);
-  cairo_set_line_width(cr, 5.0);
-  cairo_move_to(cr, f.px(-hw * mm) + 2, f.py(-travel * mm) + 2.5);
-  cairo_line_to(cr, f.px(hw * mm) - 2, f.py(-travel * mm) + 2.5);
+  cairo_set_line_width(cr, 4.0);
+  cairo_move_to(cr, f.px(-hw * mm) + 2, f.py(-travel * mm) + 2.0);
+  cairo_line_to(cr, f.px(hw * mm) - 2, f.py(-travel * mm) + 2.0);
   cairo_stroke(cr);
   cairo_restore(cr);
 
   // Settlement contours (downward positive) at the same nice levels for both.
-  std::vector<double> levels;
-  for (double v : nice_ticks(0.0, largest_settlement(fig) * mm, 8)) {
-    if (v > 0.0) levels.push_back(v / mm);
-  }
-  const double step_mm = levels.size() > 1 ? (levels[1] - levels[0]) * mm : 1.0;
-  auto label = [&](double v) { return format_tick(v * mm, step_mm); };
+  const std::vector<double> levels = contour_levels({}, 0.0, largest_settlement(fig));
+  std::vector<double> levels_mm;
+  for (double v : levels) levels_mm.push_back(v * mm);
+  auto label = [&](double v) { return contour_label(v * mm, levels_mm); };
   ContourStyle dem_style;
   dem_style.colour = dem_colour;
-  dem_style.line_width = 2.0;
+  dem_style.line_width = 1.6;
   draw_contours(cr, f, settlement(fig.dem), levels, label, dem_style);
   ContourStyle piv_style;
   piv_style.colour = piv_colour;
-  piv_style.line_width = 2.0;
+  piv_style.line_width = 1.6;
   piv_style.min_label_length = 1e9;  // labels on the DEM lines only
   cairo_save(cr);
-  const double dash[] = {9.0, 5.0};
+  const double dash[] = {6.0, 3.5};
   cairo_set_dash(cr, dash, 2, 0.0);
   draw_contours(cr, f, settlement(fig.piv), levels, label, piv_style);
   cairo_restore(cr);
@@ -118,39 +120,34 @@ void write_comparison_png(const std::filesystem::path& path, const ComparisonFig
   AxesStyle axes;
   axes.x_label = "x from the trapdoor centre (mm)";
   axes.y_label = "z (mm)";
-  axes.max_x_ticks = std::max(3, static_cast<int>(plot.w / 88.0));
-  axes.max_y_ticks = std::max(3, static_cast<int>(plot.h / 48.0));
+  axes.font_size = kFontSmall;
+  axes.max_x_ticks = std::max(3, static_cast<int>(plot.w / (3.2 * kFontSmall)));
+  axes.max_y_ticks = std::max(3, static_cast<int>(plot.h / (2.2 * kFontSmall)));
   draw_axes(cr, f, axes);
 
-  // Legend, top right inside the frame.
-  const double lw = 250.0, lh = 100.0, lx = plot.right() - lw - 10.0, ly = plot.y + 10.0;
-  cairo_set_source_rgba(cr, 1.0, 1.0, 1.0, 0.9);
-  cairo_rectangle(cr, lx, ly, lw, lh);
-  cairo_fill_preserve(cr);
-  cairo_set_source_rgb(cr, 0.5, 0.5, 0.5);
-  cairo_set_line_width(cr, 1.0);
-  cairo_stroke(cr);
-  const TextStyle ts{.size = 15.0, .v = VAlign::middle};
+  // Legend between the title and the map.
+  const TextStyle ts{.size = kFontSmall, .v = VAlign::middle};
+  const double lx = 10.0;
   auto entry = [&](double y, Rgb c, bool dashed, const std::string& text) {
     cairo_save(cr);
     set_colour(cr, c);
-    cairo_set_line_width(cr, 2.0);
+    cairo_set_line_width(cr, 1.6);
     if (dashed) cairo_set_dash(cr, dash, 2, 0.0);
-    cairo_move_to(cr, lx + 12, y);
-    cairo_line_to(cr, lx + 62, y);
+    cairo_move_to(cr, lx, y);
+    cairo_line_to(cr, lx + 36, y);
     cairo_stroke(cr);
     cairo_restore(cr);
-    draw_text(cr, text, lx + 72, y, ts);
+    draw_text(cr, text, lx + 44, y, ts);
   };
-  entry(ly + 20, dem_colour, false, fig.dem_label + " settlement (mm)");
-  entry(ly + 46, piv_colour, true, fig.piv_label + " settlement (mm)");
+  entry(legend_top + 0.5 * row, dem_colour, false, fig.dem_label + " settlement (mm, down +; labelled)");
+  entry(legend_top + 1.5 * row, piv_colour, true, fig.piv_label + " settlement (mm), same levels");
   cairo_set_source_rgb(cr, 0.90, 0.93, 0.97);
-  cairo_rectangle(cr, lx + 12, ly + 64, 50, 18);
+  cairo_rectangle(cr, lx, legend_top + 2.1 * row, 36, 0.8 * row);
   cairo_fill(cr);
-  draw_text(cr, "compared area", lx + 72, ly + 73, ts);
+  draw_text(cr, "compared area", lx + 44, legend_top + 2.5 * row, ts);
 
-  draw_title(cr, left, 18.0, fig.title, fig.subtitle, 20.0);
-  canvas.write_png(path);
+  draw_title(cr, 10.0, 10.0, fig.title, fig.subtitle, kFontTitle, width - 20.0);
+  canvas.write(path);
 }
 
 }  // namespace trapdem::plot

@@ -21,7 +21,8 @@ struct ComparisonFigure {
   std::string dem_label = "DEM", piv_label = "PIV";
 };
 
-// Writes the PNG (width px; the height follows the box's aspect). Throws FileError on failure.
-void write_comparison_png(const std::filesystem::path& path, const ComparisonFigure& figure, int width = 1200);
+// Writes the figure (width layout units, the height following the box's aspect; the extension picks the
+// format). Throws FileError on failure.
+void write_comparison_figure(const std::filesystem::path& path, const ComparisonFigure& figure, int width = 640);
 
 }  // namespace trapdem::plot

@@ -1,11 +1,44 @@
 #include "plot/contour_plot.hpp"
 
+#include <algorithm>
 #include <cmath>
+
+#include <fmt/format.h>
+
+#include "core/errors.hpp"
 
 #include "plot/marching_squares.hpp"
 #include "plot/text.hpp"
 
 namespace trapdem::plot {
+
+std::vector<double> contour_levels(const ContourLevels& spec, double lo, double hi, int automatic_count) {
+  if (!spec.list.empty()) {
+    std::vector<double> levels = spec.list;
+    std::sort(levels.begin(), levels.end());
+    levels.erase(std::unique(levels.begin(), levels.end()), levels.end());
+    return levels;
+  }
+  std::vector<double> levels;
+  if (!(hi > lo)) return levels;
+  const double step = spec.step > 0.0 ? spec.step : nice_step(hi - lo, automatic_count);
+  if ((hi - lo) / step > 1000.0) {
+    throw InputError(fmt::format("contour step {:g}: more than 1000 levels over the field's range {:g} to {:g}", step,
+                                 lo, hi));
+  }
+  for (double k = std::floor(lo / step); k * step < hi; k += 1.0) {
+    const double v = k * step;
+    if (v > lo && std::abs(v) > 1e-9 * step) levels.push_back(v);
+  }
+  return levels;
+}
+
+std::string contour_label(double level, const std::vector<double>& levels) {
+  // Four significant digits tell 1-2-5 levels and user lists apart and drop round-off (0.30000000004).
+  const double step = levels.size() > 1 ? std::abs(levels[1] - levels[0]) : 1.0;
+  if (std::abs(level) < 1e-9 * step) return "0";
+  return fmt::format("{:.4g}", level);
+}
 
 int draw_contours(cairo_t* cr, const PlotFrame& frame, const GridField& field, const std::vector<double>& levels,
                   const std::function<std::string(double)>& label, const ContourStyle& style) {

@@ -19,9 +19,9 @@ struct ElementCurve {
   bool dashed = false;
 };
 
-// Writes the two-panel PNG; `reference_sin_phi` draws horizontal lines in the upper panel (e.g.
+// Writes the two-panel figure (the extension picks the format); `reference_sin_phi` draws horizontal lines in the upper panel (e.g.
 // sin 15.7 deg, the glass beads' critical state in the seed's Table 1).
-void write_element_figure_png(const std::filesystem::path& path, const std::string& title, const std::string& subtitle,
+void write_element_figure(const std::filesystem::path& path, const std::string& title, const std::string& subtitle,
                               const std::vector<ElementCurve>& curves, const std::vector<double>& reference_sin_phi);
 
 }  // namespace trapdem::plot

@@ -31,12 +31,12 @@ void write_one_key(const std::filesystem::path& path, const ErrorSurface& s) {
     series.y.push_back(s.error[k] * s.error_scale);
   }
   chart.series = {series};
-  write_line_chart_png(path, chart);
+  write_line_chart(path, chart);
 }
 
 }  // namespace
 
-void write_error_surface_png(const std::filesystem::path& path, const ErrorSurface& s) {
+void write_error_surface(const std::filesystem::path& path, const ErrorSurface& s) {
   const std::size_t nx = s.x_values.size(), ny = s.y_key.empty() ? 1 : s.y_values.size();
   if (nx == 0 || s.error.size() != nx * ny) throw std::invalid_argument("error surface: grid and errors do not match");
   if (s.y_key.empty()) {
@@ -52,12 +52,17 @@ void write_error_surface_png(const std::filesystem::path& path, const ErrorSurfa
     if (best == s.error.size() || s.error[k] < s.error[best]) best = k;
   }
   if (!(hi > lo)) hi = lo + 1e-12;
-  const double cell_w = std::clamp(560.0 / nx, 60.0, 140.0), cell_h = std::clamp(420.0 / ny, 44.0, 100.0);
-  const double left = 150.0, top = 110.0, bottom = 90.0, right = 170.0;
-  const int width = static_cast<int>(left + nx * cell_w + right), height = static_cast<int>(top + ny * cell_h + bottom);
+  // Cells share kFigureWidth less the margins (at least 3.5 numbers wide each).
+  const double left = 6.0 * kFontSmall, bottom = 4.2 * kFontSmall, right = 7.0 * kFontSmall;
+  const double cell_w = std::max((kFigureWidth - left - right) / nx, 3.5 * kFontSmall);
+  const double cell_h = std::clamp(300.0 / ny, 2.2 * kFontSmall, 80.0);
+  const int width = static_cast<int>(std::ceil(left + nx * cell_w + right));
+  const double top = 10.0 + title_height(s.title, s.subtitle, kFontTitle, width - 20.0) + 8.0;
+  const int height = static_cast<int>(std::ceil(top + ny * cell_h + bottom));
   Canvas canvas(width, height);
+  canvas.set_title(s.title);
   cairo_t* cr = canvas.cr();
-  draw_title(cr, 20.0, 16.0, s.title, s.subtitle, 20.0);
+  draw_title(cr, 10.0, 10.0, s.title, s.subtitle, kFontTitle, width - 20.0);
   const ColourMap map(ColourMapKind::viridis);
   for (std::size_t iy = 0; iy < ny; ++iy) {
     for (std::size_t ix = 0; ix < nx; ++ix) {
@@ -70,29 +75,29 @@ void write_error_surface_png(const std::filesystem::path& path, const ErrorSurfa
       const bool dark = std::isfinite(e) && (e - lo) / (hi - lo) < 0.55;
       draw_text(cr, std::isfinite(e) ? fmt::format("{:.3g}", e * s.error_scale) : "—", cell.x + 0.5 * cell.w,
                 cell.y + 0.5 * cell.h,
-                TextStyle{.size = 15.0, .bold = iy * nx + ix == best,
+                TextStyle{.size = kFontSmall, .bold = iy * nx + ix == best,
                           .colour = dark ? Rgb{1, 1, 1} : Rgb{0.1, 0.1, 0.1}, .h = HAlign::centre, .v = VAlign::middle});
     }
   }
   if (best < s.error.size()) {
     const std::size_t bx = best % nx, by = best / nx;
     set_colour(cr, Rgb{0.85, 0.1, 0.1});
-    cairo_set_line_width(cr, 4.0);
+    cairo_set_line_width(cr, 3.0);
     cairo_rectangle(cr, left + bx * cell_w + 2.0, top + (ny - 1 - by) * cell_h + 2.0, cell_w - 4.0, cell_h - 4.0);
     cairo_stroke(cr);
   }
-  const TextStyle tick{.size = 14.0, .h = HAlign::centre, .v = VAlign::top};
+  const TextStyle tick{.size = kFontSmall, .h = HAlign::centre, .v = VAlign::top};
   for (std::size_t ix = 0; ix < nx; ++ix) draw_text(cr, s.x_values[ix], left + (ix + 0.5) * cell_w, top + ny * cell_h + 8.0, tick);
   for (std::size_t iy = 0; iy < ny; ++iy)
     draw_text(cr, s.y_values[iy], left - 10.0, top + (ny - 1 - iy + 0.5) * cell_h,
-              TextStyle{.size = 14.0, .h = HAlign::right, .v = VAlign::middle});
-  draw_text(cr, s.x_key, left + 0.5 * nx * cell_w, top + ny * cell_h + 40.0,
-            TextStyle{.size = 16.0, .h = HAlign::centre, .v = VAlign::top});
-  draw_text(cr, s.y_key, 24.0, top + 0.5 * ny * cell_h,
-            TextStyle{.size = 16.0, .angle_deg = 90.0, .h = HAlign::centre, .v = VAlign::top});
-  ColourBarStyle bar{.label = s.error_label, .tick_scale = s.error_scale};
-  draw_colour_bar(cr, {left + nx * cell_w + 30.0, top, 24.0, ny * cell_h}, map, lo, hi, bar);
-  canvas.write_png(path);
+              TextStyle{.size = kFontSmall, .h = HAlign::right, .v = VAlign::middle});
+  draw_text(cr, s.x_key, left + 0.5 * nx * cell_w, top + ny * cell_h + 1.8 * kFontSmall,
+            TextStyle{.size = kFontLabel, .h = HAlign::centre, .v = VAlign::top});
+  draw_text(cr, s.y_key, 8.0, top + 0.5 * ny * cell_h,
+            TextStyle{.size = kFontLabel, .angle_deg = 90.0, .h = HAlign::centre, .v = VAlign::top});
+  ColourBarStyle bar{.label = s.error_label, .font_size = kFontSmall, .max_ticks = 5, .tick_scale = s.error_scale};
+  draw_colour_bar(cr, {left + nx * cell_w + 14.0, top, 16.0, ny * cell_h}, map, lo, hi, bar);
+  canvas.write(path);
 }
 
 }  // namespace trapdem::plot

@@ -18,6 +18,6 @@ struct ErrorSurface {
 };
 
 // Throws std::invalid_argument if error.size() does not match the grid.
-void write_error_surface_png(const std::filesystem::path& path, const ErrorSurface& surface);
+void write_error_surface(const std::filesystem::path& path, const ErrorSurface& surface);
 
 }  // namespace trapdem::plot

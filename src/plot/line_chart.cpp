@@ -9,7 +9,7 @@
 
 namespace trapdem::plot {
 
-void write_line_chart_png(const std::filesystem::path& path, const LineChart& chart, int width, int height) {
+void draw_line_chart(cairo_t* cr, Rect area, const LineChart& chart) {
   double xlo = 0.0, xhi = 0.0, ylo = chart.y_min, yhi = chart.y_min;
   bool any = false;
   for (const auto& s : chart.series) {
@@ -25,24 +25,25 @@ void write_line_chart_png(const std::filesystem::path& path, const LineChart& ch
   for (double y : chart.reference_y) yhi = std::max(yhi, y), ylo = std::min(ylo, y);
   if (!(xhi > xlo)) xhi = xlo + 1.0;
   if (!(yhi > ylo)) yhi = ylo + 1.0;
-  const double ystep = nice_step(yhi - ylo, 8);
+  const double ystep = nice_step(yhi - ylo, 6);
   ylo = std::floor(ylo / ystep) * ystep;
   yhi = std::ceil(yhi / ystep - 1e-3) * ystep;
-  const double xstep = nice_step(xhi - xlo, 8);
+  const double xstep = nice_step(xhi - xlo, 6);
   xhi = std::ceil(xhi / xstep - 1e-3) * xstep;
 
-  Canvas canvas(width, height);
-  cairo_t* cr = canvas.cr();
-  const Rect plot{100.0, 95.0, width - 140.0, height - 95.0 - 85.0};
+  const double top = area.y + 10.0 + title_height(chart.title, chart.subtitle, kFontTitle, area.w - 20.0) + 8.0;
+  const double left = 4.0 * kFontSmall, bottom = 3.6 * kFontSmall;
+  const Rect plot{area.x + left, top, area.w - left - 1.6 * kFontSmall, area.bottom() - top - bottom};
   const PlotFrame f(plot, {xlo, xhi}, {ylo, yhi});
-  AxesStyle axes{.x_label = chart.x_label, .y_label = chart.y_label, .grid = true};
+  AxesStyle axes{.x_label = chart.x_label, .y_label = chart.y_label, .max_x_ticks = 6, .max_y_ticks = 6,
+                 .font_size = kFontSmall, .grid = true};
   draw_axes(cr, f, axes);
   cairo_save(cr);
   f.clip(cr);
   for (double y : chart.reference_y) {
     cairo_set_source_rgb(cr, 0.45, 0.45, 0.45);
-    cairo_set_line_width(cr, 1.2);
-    const double dash[] = {2.0, 4.0};
+    cairo_set_line_width(cr, 1.0);
+    const double dash[] = {1.5, 3.0};
     cairo_set_dash(cr, dash, 2, 0.0);
     cairo_move_to(cr, plot.x, f.py(y));
     cairo_line_to(cr, plot.right(), f.py(y));
@@ -53,7 +54,7 @@ void write_line_chart_png(const std::filesystem::path& path, const LineChart& ch
     set_colour(cr, s.colour);
     cairo_set_line_width(cr, s.width);
     cairo_set_line_join(cr, CAIRO_LINE_JOIN_ROUND);
-    const double dash[] = {9.0, 5.0};
+    const double dash[] = {6.0, 3.5};
     cairo_set_dash(cr, dash, s.dashed ? 2 : 0, 0.0);
     bool pen = false;
     for (std::size_t k = 0; k < s.x.size() && k < s.y.size(); ++k) {
@@ -70,10 +71,11 @@ void write_line_chart_png(const std::filesystem::path& path, const LineChart& ch
   }
   cairo_restore(cr);
   // Legend, top right inside the frame.
-  const TextStyle legend{.size = 15.0, .v = VAlign::middle};
+  const TextStyle legend{.size = kFontSmall, .v = VAlign::middle};
   double widest = 0.0;
   for (const auto& s : chart.series) widest = std::max(widest, text_box(cr, s.name, legend).w);
-  const double lw = widest + 70.0, lh = 26.0 * chart.series.size() + 12.0;
+  const double row = 1.3 * kFontSmall;
+  const double lw = widest + 52.0, lh = row * chart.series.size() + 8.0;
   // The first corner whose box no data point falls in: top right, bottom right, top left, middle right.
   auto data_inside = [&](const Rect& b) {
     for (const auto& s : chart.series) {
@@ -84,10 +86,11 @@ void write_line_chart_png(const std::filesystem::path& path, const LineChart& ch
     }
     return false;
   };
-  const std::vector<Rect> candidates{{plot.right() - lw - 12.0, plot.y + 12.0, lw, lh},
-                                     {plot.right() - lw - 12.0, plot.bottom() - lh - 12.0, lw, lh},
-                                     {plot.x + 12.0, plot.y + 12.0, lw, lh},
-                                     {plot.right() - lw - 12.0, plot.y + 0.5 * (plot.h - lh), lw, lh}};
+  const std::vector<Rect> candidates{{plot.right() - lw - 8.0, plot.y + 8.0, lw, lh},
+                                     {plot.right() - lw - 8.0, plot.bottom() - lh - 8.0, lw, lh},
+                                     {plot.x + 8.0, plot.y + 8.0, lw, lh},
+                                     {plot.x + 8.0, plot.bottom() - lh - 8.0, lw, lh},
+                                     {plot.right() - lw - 8.0, plot.y + 0.5 * (plot.h - lh), lw, lh}};
   Rect box = candidates.front();
   for (const Rect& c : candidates) {
     if (!data_inside(c)) {
@@ -103,22 +106,25 @@ void write_line_chart_png(const std::filesystem::path& path, const LineChart& ch
   cairo_stroke(cr);
   for (std::size_t k = 0; k < chart.series.size(); ++k) {
     const auto& s = chart.series[k];
-    const double y = box.y + 19.0 + 26.0 * k;
+    const double y = box.y + 4.0 + row * (k + 0.5);
     set_colour(cr, s.colour);
     cairo_set_line_width(cr, s.width);
-    const double dash[] = {9.0, 5.0};
+    const double dash[] = {6.0, 3.5};
     cairo_set_dash(cr, dash, s.dashed ? 2 : 0, 0.0);
-    cairo_move_to(cr, box.x + 10.0, y);
-    cairo_line_to(cr, box.x + 52.0, y);
+    cairo_move_to(cr, box.x + 6.0, y);
+    cairo_line_to(cr, box.x + 40.0, y);
     cairo_stroke(cr);
     cairo_set_dash(cr, nullptr, 0, 0.0);
-    draw_text(cr, s.name, box.x + 60.0, y, legend);
+    draw_text(cr, s.name, box.x + 46.0, y, legend);
   }
-  draw_text(cr, chart.title, plot.x, 18.0, TextStyle{.size = 20.0, .bold = true, .v = VAlign::top});
-  if (!chart.subtitle.empty()) {
-    draw_text(cr, chart.subtitle, plot.x, 47.0, TextStyle{.size = 15.0, .colour = {0.3, 0.3, 0.3}, .v = VAlign::top});
-  }
-  canvas.write_png(path);
+  draw_title(cr, area.x + 10.0, area.y + 10.0, chart.title, chart.subtitle, kFontTitle, area.w - 20.0);
+}
+
+void write_line_chart(const std::filesystem::path& path, const LineChart& chart, int width, int height) {
+  Canvas canvas(width, height);
+  canvas.set_title(chart.title);
+  draw_line_chart(canvas.cr(), {0.0, 0.0, static_cast<double>(width), static_cast<double>(height)}, chart);
+  canvas.write(path);
 }
 
 }  // namespace trapdem::plot

@@ -1,11 +1,17 @@
 #pragma once
 // A line chart of a few series against one x axis, with a legend: used for the ground reaction
-// curve (trapdoor and base stress over geostatic stress against trapdoor displacement over B).
+// curve (trapdoor and base stress over geostatic stress against trapdoor displacement over B), the
+// ground reaction curves of several runs (`trapdem figure --grc`), the element test's panels. The
+// file's extension picks the format (canvas.hpp).
+#include <cairo.h>
+
 #include <filesystem>
 #include <string>
 #include <vector>
 
+#include "plot/canvas.hpp"
 #include "plot/colour_map.hpp"
+#include "plot/text.hpp"
 
 namespace trapdem::plot {
 
@@ -14,7 +20,7 @@ struct LineSeries {
   std::vector<double> x, y;
   Rgb colour{0.1, 0.1, 0.1};
   bool dashed = false;
-  double width = 2.5;
+  double width = 2.0;
 };
 
 struct LineChart {
@@ -24,7 +30,11 @@ struct LineChart {
   std::vector<double> reference_y;    // horizontal reference lines (e.g. 1 = geostatic)
 };
 
-void write_line_chart_png(const std::filesystem::path& path, const LineChart& chart, int width = 1000,
-                          int height = 700);
+// Draws the chart (title block, axes, series, legend) into `area` of a canvas.
+void draw_line_chart(cairo_t* cr, Rect area, const LineChart& chart);
+
+// One chart as a figure, `width` x `height` layout units.
+void write_line_chart(const std::filesystem::path& path, const LineChart& chart,
+                      int width = static_cast<int>(kFigureWidth), int height = 470);
 
 }  // namespace trapdem::plot

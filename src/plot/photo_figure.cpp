@@ -11,8 +11,9 @@ namespace trapdem::plot {
 
 namespace {
 
-// The standard layout: canvas width and the margins around the frame, px.
-constexpr double width = 1400.0, top = 96.0, left = 90.0, right = 170.0, bottom = 70.0;
+// The standard layout: canvas width and the margins around the frame (the top one below the title
+// block), layout units.
+constexpr double width = kFigureWidth, left = 4.4 * kFontSmall, right = 150.0, bottom = 3.5 * kFontSmall;
 
 struct FrameMapping {
   PlotFrame frame;
@@ -39,12 +40,18 @@ FrameMapping fit_photograph(int w, int h, const PixelToPlot& m, Rect space) {
   return f;
 }
 
-Rect frame_space(double canvas_height) { return {left, top, width - left - right, canvas_height - top - bottom}; }
+Rect frame_space(double top, double canvas_height) {
+  return {left, top, width - left - right, canvas_height - top - bottom};
+}
+
+double title_block_height(const std::string& title, const std::string& subtitle) {
+  return 10.0 + title_height(title, subtitle, kFontTitle, width - 20.0) + 6.0;
+}
 
 // Canvas height for a frame of the photograph's aspect ratio in the standard layout.
-int canvas_height(int w, int h, const PixelToPlot& m) {
+int canvas_height(int w, int h, const PixelToPlot& m, double top) {
   const FrameMapping probe = fit_photograph(w, h, m, {left, top, width - left - right, 1e6});
-  return static_cast<int>(top + std::min(probe.frame.pixels().h, 1100.0) + bottom);
+  return static_cast<int>(std::ceil(top + std::min(probe.frame.pixels().h, 1.2 * width) + bottom));
 }
 
 }  // namespace
@@ -62,15 +69,27 @@ std::array<double, 2> pixel_to_plot(const PixelToPlot& m, double x, double y) {
   return {h[0] / h[2], h[1] / h[2]};
 }
 
-PhotoFigure::PhotoFigure(int photo_width, int photo_height, const PixelToPlot& m)
-    : canvas_(static_cast<int>(width), canvas_height(photo_width, photo_height, m)),
-      frame_(fit_photograph(photo_width, photo_height, m, frame_space(canvas_.height())).frame) {
-  pixel_to_device_ = fit_photograph(photo_width, photo_height, m, frame_space(canvas_.height())).pixel_to_device;
+PhotoFigure::PhotoFigure(int photo_width, int photo_height, const PixelToPlot& m, const std::string& title,
+                         const std::string& subtitle)
+    : canvas_(static_cast<int>(width),
+              canvas_height(photo_width, photo_height, m, title_block_height(title, subtitle))),
+      frame_(fit_photograph(photo_width, photo_height, m,
+                            frame_space(title_block_height(title, subtitle), canvas_.height()))
+                 .frame) {
+  pixel_to_device_ = fit_photograph(photo_width, photo_height, m,
+                                    frame_space(title_block_height(title, subtitle), canvas_.height()))
+                         .pixel_to_device;
+  canvas_.set_title(title);
+  draw_title(canvas_.cr(), 10.0, 10.0, title, subtitle, kFontTitle, width - 20.0);
+}
+
+std::array<double, 2> PhotoPlacement::device_of_pixel(double x, double y) const {
+  cairo_matrix_transform_point(&pixel_to_device, &x, &y);
+  return {x, y};
 }
 
 std::array<double, 2> PhotoFigure::device_of_pixel(double x, double y) const {
-  cairo_matrix_transform_point(&pixel_to_device_, &x, &y);
-  return {x, y};
+  return placement().device_of_pixel(x, y);
 }
 
 double PhotoFigure::device_per_pixel() const {
@@ -80,15 +99,20 @@ double PhotoFigure::device_per_pixel() const {
 
 void PhotoFigure::draw_photograph(const Photograph& photograph, double fade) {
   cairo_t* cr = canvas_.cr();
-  // Grey to cairo's RGB24 (B, G, R, unused bytes of a native-endian 32-bit word).
-  std::vector<std::uint32_t> rgb(static_cast<std::size_t>(photograph.width) * photograph.height);
-  for (std::size_t i = 0; i < rgb.size(); ++i) {
-    const std::uint32_t g = photograph.grey[i];
-    rgb[i] = 0xff000000u | g << 16 | g << 8 | g;
+  // Grey to cairo's RGB24 (B, G, R, unused bytes of a native-endian 32-bit word), in a surface that
+  // owns its pixels: the canvas records the drawing and replays it when the figure is written.
+  cairo_surface_t* s = cairo_image_surface_create(CAIRO_FORMAT_RGB24, photograph.width, photograph.height);
+  cairo_surface_flush(s);
+  unsigned char* data = cairo_image_surface_get_data(s);
+  const int stride = cairo_image_surface_get_stride(s);
+  for (int y = 0; data && y < photograph.height; ++y) {
+    auto* row = reinterpret_cast<std::uint32_t*>(data + static_cast<std::ptrdiff_t>(y) * stride);
+    for (int x = 0; x < photograph.width; ++x) {
+      const std::uint32_t g = photograph.grey[static_cast<std::size_t>(y) * photograph.width + x];
+      row[x] = 0xff000000u | g << 16 | g << 8 | g;
+    }
   }
-  cairo_surface_t* s = cairo_image_surface_create_for_data(reinterpret_cast<unsigned char*>(rgb.data()),
-                                                           CAIRO_FORMAT_RGB24, photograph.width, photograph.height,
-                                                           4 * photograph.width);
+  cairo_surface_mark_dirty(s);
   cairo_save(cr);
   frame_.clip(cr);
   cairo_set_source_rgb(cr, 0.0, 0.0, 0.0);
@@ -105,32 +129,22 @@ void PhotoFigure::draw_photograph(const Photograph& photograph, double fade) {
     cairo_paint(cr);
     cairo_restore(cr);
   }
-  cairo_surface_finish(s);
   cairo_surface_destroy(s);
 }
 
 void PhotoFigure::draw_axes(const std::string& unit) {
   AxesStyle a;
   a.x_label = fmt::format("x ({})", unit);
-  a.y_label = unit == "px" ? "-y (px, image rows counted upward)" : fmt::format("z ({}), up", unit);
-  a.font_size = 15.0;
+  a.y_label = unit == "px" ? "−y (px, rows upward)" : fmt::format("z ({}), up", unit);
+  a.font_size = kFontSmall;
+  a.max_x_ticks = std::max(3, static_cast<int>(frame_.pixels().w / (3.2 * kFontSmall)));
+  a.max_y_ticks = std::max(3, static_cast<int>(frame_.pixels().h / (2.2 * kFontSmall)));
   plot::draw_axes(canvas_.cr(), frame_, a);
 }
 
 Rect PhotoFigure::colour_bar_rect() const {
   const Rect& p = frame_.pixels();
-  return {p.right() + 22.0, p.y + 0.1 * p.h, 22.0, 0.8 * p.h};
-}
-
-void PhotoFigure::draw_titles(const std::string& title, const std::string& subtitle) {
-  TextStyle t;
-  t.size = 24.0;
-  t.bold = true;
-  draw_text(canvas_.cr(), title, 20.0, 34.0, t);
-  TextStyle s;
-  s.size = 16.0;
-  s.colour = {0.25, 0.25, 0.25};
-  draw_text(canvas_.cr(), subtitle, 20.0, 64.0, s);
+  return {p.right() + 14.0, p.y + 0.05 * p.h, 16.0, 0.9 * p.h};
 }
 
 }  // namespace trapdem::plot

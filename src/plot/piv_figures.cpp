@@ -24,8 +24,17 @@ double rank_quantile(std::vector<double> v, double q) {
   return v[k];
 }
 
-PhotoFigure photo_figure(const PivFigureData& d) {
-  return PhotoFigure(d.first_image.width, d.first_image.height, d.pixel_to_plot);
+PhotoFigure photo_figure(const PivFigureData& d, const std::string& title, const std::string& subtitle) {
+  return PhotoFigure(d.first_image.width, d.first_image.height, d.pixel_to_plot, title, subtitle);
+}
+
+ColourBarStyle bar_style(std::string label, bool extend_high = false) {
+  ColourBarStyle cb;
+  cb.label = std::move(label);
+  cb.font_size = kFontSmall;
+  cb.max_ticks = 5;
+  cb.extend_high = extend_high;
+  return cb;
 }
 
 void draw_arrow(cairo_t* cr, std::array<double, 2> a, std::array<double, 2> b, double head) {
@@ -45,9 +54,15 @@ void draw_arrow(cairo_t* cr, std::array<double, 2> a, std::array<double, 2> b, d
 
 }  // namespace
 
-void write_piv_strain_png(const std::filesystem::path& path, const PivFigureData& d, bool incremental) {
+PhotoPlacement write_piv_strain_figure(const std::filesystem::path& path, const PivFigureData& d, bool incremental) {
   const StrainTriangles& s = incremental ? d.incremental_strain : d.total_strain;
-  PhotoFigure figure = photo_figure(d);
+  const auto valid = std::count_if(d.subsets.begin(), d.subsets.end(),
+                                   [](const SubsetView& v) { return v.mark == SubsetMark::valid; });
+  const std::size_t n = d.image_number;
+  PhotoFigure figure = photo_figure(
+      d, fmt::format("{}: {} shear strain", d.title, incremental ? "incremental" : "total"),
+      fmt::format("image {} to image {}, over image {}; {} of {} subsets valid; blank: no valid triangle",
+                  incremental ? n - 1 : 1, n, n, valid, d.subsets.size()));
   cairo_t* cr = figure.cr();
   const PlotFrame& f = figure.frame();
   figure.draw_photograph(d.last_image, 0.0);
@@ -67,36 +82,40 @@ void write_piv_strain_png(const std::filesystem::path& path, const PivFigureData
     cairo_close_path(cr);
     set_colour(cr, map.of(s.max_shear[t], 0.0, vmax), 0.72);
     cairo_fill_preserve(cr);
-    cairo_set_line_width(cr, 0.6);
+    cairo_set_line_width(cr, 0.3);
     cairo_stroke(cr);
   }
   cairo_restore(cr);
   figure.draw_axes(d.unit);
-  ColourBarStyle cb;
-  cb.label = incremental ? "incremental max shear strain γmax (-)" : "max shear strain γmax (-)";
-  cb.extend_high = true;
-  draw_colour_bar(cr, figure.colour_bar_rect(), map, 0.0, vmax, cb);
-  const auto valid = std::count_if(d.subsets.begin(), d.subsets.end(),
-                                   [](const SubsetView& v) { return v.mark == SubsetMark::valid; });
-  const std::size_t n = d.image_number;
-  figure.draw_titles(fmt::format("{}: {} shear strain", d.title, incremental ? "incremental" : "total"),
-                     fmt::format("image {} to image {}, over image {}; {} of {} subsets valid; blank: no valid triangle",
-                                 incremental ? n - 1 : 1, n, n, valid, d.subsets.size()));
-  figure.write_png(path);
+  const Rect bar = figure.colour_bar_rect();
+  draw_colour_bar(cr, {bar.x, bar.y + 12.0, bar.w, bar.h - 12.0}, map, 0.0, vmax,
+                  bar_style(incremental ? "incremental γmax (-)" : "max shear strain γmax (-)", true));
+  figure.write(path);
+  return figure.placement();
 }
 
-void write_piv_vertical_displacement_png(const std::filesystem::path& path, const PivFigureData& d) {
+PhotoPlacement write_piv_vertical_displacement_figure(const std::filesystem::path& path, const PivFigureData& d,
+                                           const ContourLevels& spec) {
   const StrainTriangles& s = d.total_strain;
-  PhotoFigure figure = photo_figure(d);
+  std::string levels_text = "automatic levels";
+  if (!spec.list.empty()) levels_text = "levels as given";
+  else if (spec.step > 0.0) levels_text = fmt::format("levels every {:g} {}", spec.step, d.unit);
+  PhotoFigure figure = photo_figure(
+      d, fmt::format("{}: settlement", d.title),
+      fmt::format("image 1 to image {}, at the subsets' positions in image 1 (shown); settlement = downward "
+                  "displacement, heave negative; {}",
+                  d.image_number, levels_text));
   cairo_t* cr = figure.cr();
   const PlotFrame& f = figure.frame();
   figure.draw_photograph(d.first_image, 0.55);
   const ColourMap map(ColourMapKind::diverging);
-  double top = 0.0;
-  std::vector<double> dz;
+  // Settlement (-z displacement, plot units): the fill, the contour labels and the colour bar.
+  double top = 0.0, lo = 0.0, hi = 0.0;
+  std::vector<double> settlement;
   for (const auto& u : s.displacement) {
-    dz.push_back(u.z);
+    settlement.push_back(-u.z);
     top = std::max(top, std::abs(u.z));
+    lo = std::min(lo, -u.z), hi = std::max(hi, -u.z);
   }
   top = nice_ceiling(top);
   if (!s.mesh.triangles.empty()) {
@@ -105,7 +124,7 @@ void write_piv_vertical_displacement_png(const std::filesystem::path& path, cons
     const double plot_per_px = std::sqrt(std::abs(m[0] * m[4] - m[1] * m[3]));
     const double spacing = 0.5 * d.grid_step * plot_per_px;
     const GridSpec grid = grid_covering(s.position, spacing);
-    const GridField field = interpolate_nodal_field(s.mesh, s.position, dz, grid);
+    const GridField field = interpolate_nodal_field(s.mesh, s.position, settlement, grid);
     cairo_save(cr);
     f.clip(cr);
     cairo_set_antialias(cr, CAIRO_ANTIALIAS_NONE);
@@ -116,41 +135,32 @@ void write_piv_vertical_displacement_png(const std::filesystem::path& path, cons
         const double x0 = f.px(grid.x(i) - 0.5 * spacing), x1 = f.px(grid.x(i) + 0.5 * spacing);
         const double y0 = f.py(grid.z(j) + 0.5 * spacing), y1 = f.py(grid.z(j) - 0.5 * spacing);
         set_colour(cr, map.of(v, -top, top), 0.75);
-        cairo_rectangle(cr, x0, y0, x1 - x0 + 0.5, y1 - y0 + 0.5);
+        cairo_rectangle(cr, x0, y0, x1 - x0 + 0.3, y1 - y0 + 0.3);
         cairo_fill(cr);
       }
     }
     cairo_restore(cr);
-    const double step = nice_step(2.0 * top, 10);
-    std::vector<double> levels;
-    for (double l = -top + step; l < top - 0.5 * step; l += step) {
-      if (std::abs(l) > 0.25 * step) levels.push_back(l);
-    }
+    const std::vector<double> levels = contour_levels(spec, lo, hi, 10);
     ContourStyle style;
     style.coordinate_scale = 1.0;
+    style.line_width = 1.2;
     cairo_save(cr);
     f.clip(cr);
-    draw_contours(cr, f, field, levels, [&](double v) { return format_tick(v, step); }, style);
+    draw_contours(cr, f, field, levels, [&](double v) { return contour_label(v, levels); }, style);
     cairo_restore(cr);
   }
   figure.draw_axes(d.unit);
-  ColourBarStyle cb;
-  cb.label = fmt::format("upward displacement ({})", d.unit);
-  draw_colour_bar(cr, figure.colour_bar_rect(), map, -top, top, cb);
-  figure.draw_titles(fmt::format("{}: vertical displacement", d.title),
-                     fmt::format("image 1 to image {}, at the subsets' positions in image 1 (shown); heave positive, "
-                                 "settlement negative",
-                                 d.image_number));
-  figure.write_png(path);
+  draw_colour_bar(cr, figure.colour_bar_rect(), map, -top, top,
+                  bar_style(fmt::format("settlement ({}), down +", d.unit)));
+  figure.write(path);
+  return figure.placement();
 }
 
-void write_piv_vectors_png(const std::filesystem::path& path, const PivFigureData& d) {
-  PhotoFigure figure = photo_figure(d);
-  cairo_t* cr = figure.cr();
-  figure.draw_photograph(d.first_image, 0.35);
-  // Arrows at least 14 canvas px apart.
-  const double dev_per_px = figure.device_per_pixel();
-  const int stride = std::max(1, static_cast<int>(std::ceil(14.0 / (d.grid_step * dev_per_px))));
+PhotoPlacement write_piv_vectors_figure(const std::filesystem::path& path, const PivFigureData& d) {
+  // Arrows at least 10 units apart. The frame's scale does not depend on the title block (the canvas
+  // grows with it), so a figure without titles measures it.
+  const double dev_per_px = photo_figure(d, "", "").device_per_pixel();
+  const int stride = std::max(1, static_cast<int>(std::ceil(10.0 / (d.grid_step * dev_per_px))));
   std::vector<double> lengths;
   for (const auto& m : d.subsets) {
     if (m.mark == SubsetMark::valid) lengths.push_back(std::hypot(m.u, m.v));
@@ -158,32 +168,45 @@ void write_piv_vectors_png(const std::filesystem::path& path, const PivFigureDat
   const double typical = rank_quantile(lengths, 0.95);
   const double spacing_dev = stride * d.grid_step * dev_per_px;
   const double magnify = typical > 0.0 ? 1.6 * spacing_dev / (typical * dev_per_px) : 1.0;
+  PhotoFigure figure = photo_figure(d, fmt::format("{}: displacement vectors", d.title),
+                                    fmt::format("image 1 to image {}, drawn {:.3g} times their length (95th "
+                                                "percentile {:.3g} px); every {} subset(s)",
+                                                d.image_number, magnify, typical, stride));
+  cairo_t* cr = figure.cr();
+  figure.draw_photograph(d.first_image, 0.35);
   cairo_save(cr);
   figure.frame().clip(cr);
-  cairo_set_line_width(cr, 1.4);
+  cairo_set_line_width(cr, 1.0);
   cairo_set_source_rgb(cr, 0.80, 0.05, 0.05);
   for (const auto& m : d.subsets) {
     if (m.column % stride || m.row % stride || m.mark != SubsetMark::valid) continue;
     draw_arrow(cr, figure.device_of_pixel(m.x, m.y), figure.device_of_pixel(m.x + magnify * m.u, m.y + magnify * m.v),
-               7.0);
+               5.0);
   }
   cairo_restore(cr);
   figure.draw_axes(d.unit);
-  figure.draw_titles(fmt::format("{}: displacement vectors", d.title),
-                     fmt::format("image 1 to image {}, drawn {:.3g} times their length (95th percentile {:.3g} px); "
-                                 "every {} subset(s)",
-                                 d.image_number, magnify, typical, stride));
-  figure.write_png(path);
+  figure.write(path);
+  return figure.placement();
 }
 
-void write_piv_quality_png(const std::filesystem::path& path, const PivFigureData& d) {
-  PhotoFigure figure = photo_figure(d);
+PhotoPlacement write_piv_quality_figure(const std::filesystem::path& path, const PivFigureData& d) {
+  std::size_t flagged = 0, poor = 0, poor_lost = 0;
+  for (const auto& m : d.subsets) {
+    const bool no_texture = m.mark == SubsetMark::poor_texture || m.mark == SubsetMark::poor_texture_lost;
+    poor += no_texture;
+    poor_lost += m.mark == SubsetMark::poor_texture_lost;
+    flagged += m.mark == SubsetMark::flagged;
+  }
+  PhotoFigure figure =
+      photo_figure(d, fmt::format("{}: correlation quality, image {}", d.title, d.image_number),
+                   fmt::format("ZNCC per subset; grey: too little texture in image 1 ({}; {} of them lost since); "
+                               "red x: other flagged (low correlation, not converged, left image, lost: {})",
+                               poor, poor_lost, flagged));
   cairo_t* cr = figure.cr();
   figure.draw_photograph(d.first_image, 0.0);
   const ColourMap map(ColourMapKind::viridis);
   const double lo = 0.6, hi = 1.0;
   const double half = 0.5 * d.grid_step;
-  std::size_t flagged = 0, poor = 0, poor_lost = 0;
   cairo_save(cr);
   figure.frame().clip(cr);
   for (const auto& m : d.subsets) {
@@ -191,8 +214,6 @@ void write_piv_quality_png(const std::filesystem::path& path, const PivFigureDat
     const auto [x1, y1] = figure.device_of_pixel(m.x + half, m.y + half);
     const double l = std::min(x0, x1), t = std::min(y0, y1), w = std::abs(x1 - x0), h = std::abs(y1 - y0);
     if (m.mark == SubsetMark::poor_texture || m.mark == SubsetMark::poor_texture_lost) {
-      ++poor;
-      poor_lost += m.mark == SubsetMark::poor_texture_lost;
       cairo_set_source_rgba(cr, 0.55, 0.55, 0.55, 0.75);
       cairo_rectangle(cr, l, t, w, h);
       cairo_fill(cr);
@@ -204,10 +225,9 @@ void write_piv_quality_png(const std::filesystem::path& path, const PivFigureDat
       cairo_fill(cr);
     }
     if (m.mark == SubsetMark::flagged) {
-      ++flagged;
       const double cx = l + 0.5 * w, cy = t + 0.5 * h, a = std::max(2.0, 0.35 * std::min(w, h));
       cairo_set_source_rgb(cr, 0.9, 0.0, 0.0);
-      cairo_set_line_width(cr, 1.5);
+      cairo_set_line_width(cr, 1.0);
       cairo_move_to(cr, cx - a, cy - a);
       cairo_line_to(cr, cx + a, cy + a);
       cairo_move_to(cr, cx - a, cy + a);
@@ -217,14 +237,9 @@ void write_piv_quality_png(const std::filesystem::path& path, const PivFigureDat
   }
   cairo_restore(cr);
   figure.draw_axes(d.unit);
-  ColourBarStyle cb;
-  cb.label = "ZNCC (-)";
-  draw_colour_bar(cr, figure.colour_bar_rect(), map, lo, hi, cb);
-  figure.draw_titles(fmt::format("{}: correlation quality, image {}", d.title, d.image_number),
-                     fmt::format("ZNCC per subset; grey: too little texture in image 1 ({}; {} of them lost since); "
-                                 "red x: other flagged (low correlation, not converged, left image, lost: {})",
-                                 poor, poor_lost, flagged));
-  figure.write_png(path);
+  draw_colour_bar(cr, figure.colour_bar_rect(), map, lo, hi, bar_style("ZNCC (-)"));
+  figure.write(path);
+  return figure.placement();
 }
 
 }  // namespace trapdem::plot

@@ -12,6 +12,7 @@
 
 #include "analysis/point_set.hpp"
 #include "analysis/triangle_mesh.hpp"
+#include "plot/contour_plot.hpp"
 #include "plot/photo_figure.hpp"
 
 namespace trapdem::plot {
@@ -55,10 +56,13 @@ struct PivFigureData {
   StrainTriangles incremental_strain;    // the image before to the image shown
 };
 
-// Each writes one PNG (FileError if it cannot).
-void write_piv_strain_png(const std::filesystem::path& path, const PivFigureData& data, bool incremental);
-void write_piv_vertical_displacement_png(const std::filesystem::path& path, const PivFigureData& data);
-void write_piv_vectors_png(const std::filesystem::path& path, const PivFigureData& data);
-void write_piv_quality_png(const std::filesystem::path& path, const PivFigureData& data);
+// Each writes one figure, in the format the extension names (FileError if it cannot), and returns
+// where the photograph went (for marks read back by tests).
+PhotoPlacement write_piv_strain_figure(const std::filesystem::path& path, const PivFigureData& data, bool incremental);
+// Settlement (downward displacement, plot units) with contours at `levels` (default automatic).
+PhotoPlacement write_piv_vertical_displacement_figure(const std::filesystem::path& path, const PivFigureData& data,
+                                           const ContourLevels& levels = {});
+PhotoPlacement write_piv_vectors_figure(const std::filesystem::path& path, const PivFigureData& data);
+PhotoPlacement write_piv_quality_figure(const std::filesystem::path& path, const PivFigureData& data);
 
 }  // namespace trapdem::plot

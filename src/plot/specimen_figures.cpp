@@ -5,11 +5,10 @@
 #include <fmt/format.h>
 
 #include "core/length_text.hpp"
-#include "plot/canvas.hpp"
 #include "plot/colour_bar.hpp"
 #include "plot/colour_map.hpp"
-#include "plot/contour_plot.hpp"
-#include "plot/text.hpp"
+#include "analysis/field_smoothing.hpp"
+#include "plot/canvas.hpp"
 
 namespace trapdem::plot {
 
@@ -54,15 +53,15 @@ void draw_base_and_trapdoor(cairo_t* cr, const PlotFrame& f, const AnalysisResul
   cairo_save(cr);
   cairo_set_line_cap(cr, CAIRO_LINE_CAP_BUTT);
   cairo_set_source_rgb(cr, 0.25, 0.25, 0.25);
-  cairo_set_line_width(cr, 5.0);
-  cairo_move_to(cr, f.px(0.0), z0 + 2.5);
-  cairo_line_to(cr, f.px(t.left_edge() * mm), z0 + 2.5);
-  cairo_move_to(cr, f.px(t.right_edge() * mm), z0 + 2.5);
-  cairo_line_to(cr, f.px(r.geometry.box_width * mm), z0 + 2.5);
+  cairo_set_line_width(cr, 4.0);
+  cairo_move_to(cr, f.px(0.0), z0 + 2.0);
+  cairo_line_to(cr, f.px(t.left_edge() * mm), z0 + 2.0);
+  cairo_move_to(cr, f.px(t.right_edge() * mm), z0 + 2.0);
+  cairo_line_to(cr, f.px(r.geometry.box_width * mm), z0 + 2.0);
   cairo_stroke(cr);
   // cavity walls
   cairo_set_line_width(cr, 1.5);
-  const double dash[] = {4.0, 3.0};
+  const double dash[] = {3.0, 2.5};
   cairo_set_dash(cr, dash, 2, 0.0);
   cairo_move_to(cr, f.px(t.left_edge() * mm), z0);
   cairo_line_to(cr, f.px(t.left_edge() * mm), f.pixels().bottom());
@@ -71,14 +70,14 @@ void draw_base_and_trapdoor(cairo_t* cr, const PlotFrame& f, const AnalysisResul
   cairo_stroke(cr);
   cairo_set_dash(cr, nullptr, 0, 0.0);
   set_colour(cr, trapdoor_colour);
-  cairo_set_line_width(cr, 5.0);
-  cairo_move_to(cr, f.px(t.left_edge() * mm) + 2, zt + 2.5);
-  cairo_line_to(cr, f.px(t.right_edge() * mm) - 2, zt + 2.5);
+  cairo_set_line_width(cr, 4.0);
+  cairo_move_to(cr, f.px(t.left_edge() * mm) + 2, zt + 2.0);
+  cairo_line_to(cr, f.px(t.right_edge() * mm) - 2, zt + 2.0);
   cairo_stroke(cr);
   cairo_restore(cr);
 }
 
-// The plot area for a box map in `space`, leaving `left` and `bottom` pixels for the axes.
+// The plot area for a box map in `space`, leaving `left` and `bottom` units for the axes.
 PlotFrame map_frame(Rect space, const AnalysisResult& r, double left, double bottom) {
   const Range1 x = x_range_mm(r), z = z_range_mm(r);
   const Rect plot = fit_equal_aspect({space.x + left, space.y, space.w - left, space.h - bottom}, x, z);
@@ -88,6 +87,11 @@ PlotFrame map_frame(Rect space, const AnalysisResult& r, double left, double bot
 double map_height_for_width(const AnalysisResult& r, double width) {
   const Range1 x = x_range_mm(r), z = z_range_mm(r);
   return width * z.span() / x.span();
+}
+
+std::string short_displacement_text(const AnalysisResult& r) {
+  return fmt::format("δ = {}, δ/B = {:.2f}", format_mm(r.trapdoor_travel()),
+                     r.trapdoor_travel() / r.geometry.trapdoor.width);
 }
 
 std::string displacement_text(const AnalysisResult& r) {
@@ -107,10 +111,10 @@ void draw_band_traces(cairo_t* cr, const PlotFrame& f, const AnalysisResult& r) 
   const auto stroke_trace = [&](const std::vector<BandTracePoint>& trace, double width, Rgb colour) {
     if (trace.size() < 2) return;
     for (int pass = 0; pass < 2; ++pass) {
-      cairo_set_line_width(cr, pass == 0 ? width + 2.0 : width);
+      cairo_set_line_width(cr, pass == 0 ? width + 1.5 : width);
       if (pass == 0) cairo_set_source_rgba(cr, 1, 1, 1, 0.8);
       else set_colour(cr, colour);
-      const double dash[] = {7.0, 4.0};
+      const double dash[] = {5.0, 3.0};
       cairo_set_dash(cr, dash, pass == 0 ? 0 : 2, 0.0);
       for (std::size_t k = 0; k < trace.size(); ++k) {
         const double x = f.px(trace[k].x * mm), y = f.py(trace[k].z * mm);
@@ -121,35 +125,31 @@ void draw_band_traces(cairo_t* cr, const PlotFrame& f, const AnalysisResult& r) 
     }
   };
   for (const ShearBand* band : {&r.bands.left, &r.bands.right}) {
-    stroke_trace(band->trace, 2.0, {0.9, 0.1, 0.5});
-    for (const auto& branch : band->branches) stroke_trace(branch.trace, 1.5, {1.0, 0.55, 0.0});
+    stroke_trace(band->trace, 1.8, {0.9, 0.1, 0.5});
+    for (const auto& branch : band->branches) stroke_trace(branch.trace, 1.3, {1.0, 0.55, 0.0});
   }
   cairo_restore(cr);
 }
 
-void draw_specimen_axes(cairo_t* cr, const PlotFrame& f, double font_size) {
+void draw_specimen_axes(cairo_t* cr, const PlotFrame& f, double font_size, bool x_title = true) {
   AxesStyle axes;
-  axes.x_label = "x (mm)";
+  if (x_title) axes.x_label = "x (mm)";
   axes.y_label = "z (mm)";
   axes.font_size = font_size;
-  axes.max_x_ticks = std::max(3, static_cast<int>(f.pixels().w / (5.5 * font_size)));
-  axes.max_y_ticks = std::max(3, static_cast<int>(f.pixels().h / (3.0 * font_size)));
+  axes.max_x_ticks = std::max(3, static_cast<int>(f.pixels().w / (3.2 * font_size)));
+  axes.max_y_ticks = std::max(3, static_cast<int>(f.pixels().h / (2.2 * font_size)));
   draw_axes(cr, f, axes);
 }
 
-constexpr double left_margin = 95.0, bottom_margin = 80.0;
+// Room for the axes left of and below a map, for tick numbers of `font_size`.
+double left_margin(double font_size) { return 4.4 * font_size; }
+double bottom_margin(double font_size) { return 3.5 * font_size; }
+// Right of a map: the colour bar, its numbers and its label.
+constexpr double kBarGap = 14.0, kBarWidth = 16.0, kRightMargin = 150.0;
 
-}  // namespace
-
-double auto_strain_scale(const AnalysisResult& r, StrainKind kind) {
-  return nice_ceiling(quantile(strain_values(r, kind), 0.95));
-}
-
-PlotFrame draw_strain_map(cairo_t* cr, Rect area, const AnalysisResult& r, StrainKind kind, double vmax,
-                          double font_size) {
-  const PlotFrame f = map_frame(area, r, left_margin * font_size / 16.0, bottom_margin * font_size / 16.0);
-  const ColourMap map(ColourMapKind::viridis);
-  const auto& values = strain_values(r, kind);
+// Fills each kept triangle at its reference position with colour(t) (its value's colour).
+template <class Colour>
+void fill_triangles(cairo_t* cr, const PlotFrame& f, const AnalysisResult& r, Colour colour) {
   cairo_save(cr);
   f.clip(cr);
   // Specimen background: empty space light grey, so dropped triangles read as gaps.
@@ -158,7 +158,7 @@ PlotFrame draw_strain_map(cairo_t* cr, Rect area, const AnalysisResult& r, Strai
   cairo_set_antialias(cr, CAIRO_ANTIALIAS_NONE);
   for (std::size_t t = 0; t < r.mesh.mesh.size(); ++t) {
     const auto& tri = r.mesh.mesh.triangles[t];
-    set_colour(cr, map.of(values[t], 0.0, vmax));
+    set_colour(cr, colour(t));
     for (int c = 0; c < 3; ++c) {
       const Point2 p = r.points.position[tri[static_cast<std::size_t>(c)]];
       if (c == 0) cairo_move_to(cr, f.px(p.x * mm), f.py(p.z * mm));
@@ -166,7 +166,7 @@ PlotFrame draw_strain_map(cairo_t* cr, Rect area, const AnalysisResult& r, Strai
     }
     cairo_close_path(cr);
     cairo_fill_preserve(cr);
-    cairo_set_line_width(cr, 1.0);
+    cairo_set_line_width(cr, 0.5);
     cairo_stroke(cr);  // closes hairline seams between neighbours
   }
   cairo_set_antialias(cr, CAIRO_ANTIALIAS_DEFAULT);
@@ -175,82 +175,146 @@ PlotFrame draw_strain_map(cairo_t* cr, Rect area, const AnalysisResult& r, Strai
   f.clip(cr);
   draw_base_and_trapdoor(cr, f, r);
   cairo_restore(cr);
+}
+
+// The page of a single-map figure: the title block on top (wrapped to the width), the map below
+// it with its axes, the colour bar on the right; the map's height follows the specimen's aspect
+// (at most 1.2 times the width).
+struct MapPage {
+  MapPage(const AnalysisResult& r, int width, const std::string& title, const std::string& subtitle)
+      : top(10.0 + title_height(title, subtitle, kFontTitle, width - 20.0) + 8.0),
+        plot_h(std::min(1.2 * width, map_height_for_width(r, width - left_margin(kFontSmall) - kRightMargin))),
+        canvas(width, static_cast<int>(std::ceil(top + plot_h + bottom_margin(kFontSmall) + 6.0))),
+        frame(map_frame({0.0, top, width - kRightMargin, plot_h + bottom_margin(kFontSmall)}, r, left_margin(kFontSmall),
+                        bottom_margin(kFontSmall))) {
+    canvas.set_title(title);
+    draw_title(canvas.cr(), 10.0, 10.0, title, subtitle, kFontTitle, width - 20.0);
+  }
+
+  Rect bar(bool extend_high) const {
+    const Rect& p = frame.pixels();
+    const double gap = extend_high ? 16.0 : 0.0;  // room for the triangle
+    return {p.right() + kBarGap, p.y + gap, kBarWidth, p.h - gap};
+  }
+
+  double top, plot_h;
+  Canvas canvas;
+  PlotFrame frame;
+};
+
+ColourBarStyle bar_style(std::string label, double tick_scale = 1.0, bool extend_high = false) {
+  ColourBarStyle s;
+  s.label = std::move(label);
+  s.font_size = kFontSmall;
+  s.max_ticks = 5;
+  s.tick_scale = tick_scale;
+  s.extend_high = extend_high;
+  return s;
+}
+
+}  // namespace
+
+double auto_strain_scale(const AnalysisResult& r, StrainKind kind) {
+  return nice_ceiling(quantile(strain_values(r, kind), 0.95));
+}
+
+std::vector<double> shown_volumetric_strain(const AnalysisResult& r) {
+  const double length = r.settings.bands.smoothing_diameters * r.mean_diameter;
+  if (!(length > 0.0) || r.volumetric.size() != r.mesh.mesh.size()) return r.volumetric;
+  return smooth_triangle_field(make_triangle_field(r.mesh.mesh, r.points.position, r.volumetric), length).value;
+}
+
+PlotFrame draw_strain_map(cairo_t* cr, Rect area, const AnalysisResult& r, StrainKind kind, double vmax,
+                          double font_size) {
+  const PlotFrame f = map_frame(area, r, left_margin(font_size), bottom_margin(font_size));
+  const ColourMap map(ColourMapKind::viridis);
+  const auto& values = strain_values(r, kind);
+  fill_triangles(cr, f, r, [&](std::size_t t) { return map.of(values[t], 0.0, vmax); });
   if (kind == StrainKind::total) draw_band_traces(cr, f, r);
   draw_specimen_axes(cr, f, font_size);
   return f;
 }
 
-namespace {
-
-// The page of a single-map figure: a title band on top, the colour bar on the right, the map's
-// height following the specimen's aspect (at most 900 px).
-struct MapLayout {
-  int height;  // px, of the whole figure
-  Rect area;   // where the framed map goes
-};
-
-MapLayout map_layout(const AnalysisResult& r, int width) {
-  const double top = 110.0, right = 175.0;
-  const double plot_h = std::min(900.0, map_height_for_width(r, width - left_margin - right));
-  return {static_cast<int>(top + plot_h + bottom_margin + 10.0), Rect{0.0, top, width - right, plot_h + bottom_margin}};
-}
-
-// A map of the box coloured by vertical displacement (diverging, -travel to +travel): its canvas and
-// frame; `finish` adds the axes, the title and the colour bar and writes the PNG.
-struct DisplacementMap {
-  DisplacementMap(const AnalysisResult& r, int width)
-      : layout(map_layout(r, width)),
-        canvas(width, layout.height),
-        frame(map_frame(layout.area, r, left_margin, bottom_margin)),
-        travel(r.trapdoor_travel()) {}
-
-  void finish(const std::filesystem::path& path, const std::string& title, const std::string& subtitle) const {
-    cairo_t* cr = canvas.cr();
-    draw_specimen_axes(cr, frame, 16.0);
-    draw_title(cr, frame.pixels().x, 18.0, title, subtitle, 20.0);
-    draw_colour_bar(cr, {frame.pixels().right() + 30.0, frame.pixels().y, 24.0, frame.pixels().h}, map, -travel,
-                    travel, ColourBarStyle{.label = "vertical displacement w (mm)", .tick_scale = mm});
-    canvas.write_png(path);
-  }
-
-  MapLayout layout;
-  Canvas canvas;
-  PlotFrame frame;
-  double travel;  // m
-  ColourMap map{ColourMapKind::diverging};
-};
-
-}  // namespace
-
-void write_strain_map_png(const std::filesystem::path& path, const AnalysisResult& r, StrainKind kind, double vmax,
-                          int width) {
+PlotFrame write_strain_map(const std::filesystem::path& path, const AnalysisResult& r, StrainKind kind, double vmax,
+                           int width) {
   if (!(vmax > 0.0)) vmax = auto_strain_scale(r, kind);
-  const MapLayout layout = map_layout(r, width);
-  Canvas canvas(width, layout.height);
-  cairo_t* cr = canvas.cr();
-  const Rect area = layout.area;
-  const PlotFrame f = draw_strain_map(cr, area, r, kind, vmax);
   const std::string what = kind == StrainKind::total ? "maximum shear strain γmax (total)"
                                                      : "accumulated incremental maximum shear strain";
   const std::string smoothing = shows_smoothed(r, kind) ? "; " + smoothing_text(r) : std::string();
-  draw_title(cr, f.pixels().x, 18.0, fmt::format("{}: {}", r.geometry.name, what),
-             fmt::format("{}; strain from {}, drawn on the reference positions{}\n{}; dashed lines: traced band "
-                         "centres (orange: branches)",
-                         displacement_text(r), format_mm(r.reference_displacement), smoothing, view_text(r)),
-             20.0);
-  ColourBarStyle bar{.label = kind == StrainKind::total ? "γmax (-)" : "Σ Δγmax (-)", .extend_high = true};
-  draw_colour_bar(cr, {f.pixels().right() + 30.0, f.pixels().y + 20.0, 24.0, f.pixels().h - 20.0},
-                  ColourMap(ColourMapKind::viridis), 0.0, vmax, bar);
-  canvas.write_png(path);
+  const std::string bands = kind == StrainKind::total ? "; dashed: traced band centres (orange: branches)" : "";
+  MapPage page(r, width, fmt::format("{}: {}", r.geometry.name, what),
+               fmt::format("{}; strain from {}, on the reference positions{}; {}{}", displacement_text(r),
+                           format_mm(r.reference_displacement), smoothing, view_text(r), bands));
+  cairo_t* cr = page.canvas.cr();
+  const PlotFrame f =
+      draw_strain_map(cr, {0.0, page.top, width - kRightMargin, page.plot_h + bottom_margin(kFontSmall)}, r, kind, vmax);
+  draw_colour_bar(cr, page.bar(true), ColourMap(ColourMapKind::viridis), 0.0, vmax,
+                  bar_style(kind == StrainKind::total ? "γmax (-)" : "Σ Δγmax (-)", 1.0, true));
+  page.canvas.write(path);
+  return f;
 }
 
-void write_displacement_contours_png(const std::filesystem::path& path, const AnalysisResult& r, int width) {
-  DisplacementMap figure(r, width);
-  cairo_t* cr = figure.canvas.cr();
-  const PlotFrame& f = figure.frame;
-  const double travel = figure.travel;
-  const ColourMap& map = figure.map;
+PlotFrame write_volumetric_strain_map(const std::filesystem::path& path, const AnalysisResult& r, double vmax,
+                                      int width) {
+  const std::vector<double> values = shown_volumetric_strain(r);
+  if (!(vmax > 0.0)) {
+    std::vector<double> magnitude;
+    for (double v : values) magnitude.push_back(std::abs(v));
+    vmax = nice_ceiling(quantile(magnitude, 0.95));
+  }
+  const bool smoothed = r.settings.bands.smoothing_diameters > 0.0;
+  MapPage page(r, width, fmt::format("{}: volumetric strain εv (total)", r.geometry.name),
+               fmt::format("{}; strain from {}, on the reference positions{}; {}; red: compression (εv > 0), blue: "
+                           "dilation (εv < 0)",
+                           displacement_text(r), format_mm(r.reference_displacement),
+                           smoothed ? "; " + smoothing_text(r) : std::string(), view_text(r)));
+  cairo_t* cr = page.canvas.cr();
+  const ColourMap map(ColourMapKind::diverging);
+  fill_triangles(cr, page.frame, r, [&](std::size_t t) { return map.of(values[t], -vmax, vmax); });
+  draw_specimen_axes(cr, page.frame, kFontSmall);
+  draw_colour_bar(cr, page.bar(false), map, -vmax, vmax, bar_style("volumetric strain εv (-), compression +"));
+  page.canvas.write(path);
+  return page.frame;
+}
+
+namespace {
+
+// Settlement (downward displacement, m) colour scale of the displacement maps: -travel..travel.
+struct SettlementScale {
+  double travel;
+  ColourMap map{ColourMapKind::diverging};
+  Rgb of(double settlement) const { return map.of(settlement, -travel, travel); }
+};
+
+void finish_settlement_map(MapPage& page, const SettlementScale& scale) {
+  cairo_t* cr = page.canvas.cr();
+  draw_specimen_axes(cr, page.frame, kFontSmall);
+  draw_colour_bar(cr, page.bar(false), scale.map, -scale.travel, scale.travel,
+                  bar_style("settlement −w (mm), downward +", mm));
+}
+
+}  // namespace
+
+PlotFrame write_displacement_contours(const std::filesystem::path& path, const AnalysisResult& r,
+                                      const ContourLevels& spec, int width) {
   const GridField& w = r.vertical_displacement;
+  // Settlement s = -w (downward positive): the colour fill, the contour labels and the colour bar.
+  GridField settlement = w;
+  double lo = 0.0, hi = 0.0;
+  for (double& v : settlement.value) {
+    v = -v;
+    if (std::isfinite(v)) lo = std::min(lo, v), hi = std::max(hi, v);
+  }
+  const std::vector<double> levels = contour_levels(spec, lo, hi);
+  std::string levels_text = "automatic levels";
+  if (!spec.list.empty()) levels_text = "levels as given";
+  else if (spec.step > 0.0) levels_text = fmt::format("levels every {}", format_mm(spec.step));
+  MapPage page(r, width, fmt::format("{}: settlement contours (mm)", r.geometry.name),
+               fmt::format("{}; settlement −w, downward positive, on the reference positions; {}; grid {}; {}",
+                           displacement_text(r), levels_text, format_mm(r.settings.grid_spacing), view_text(r)));
+  cairo_t* cr = page.canvas.cr();
+  const PlotFrame& f = page.frame;
+  const SettlementScale scale{r.trapdoor_travel()};
   cairo_save(cr);
   f.clip(cr);
   cairo_set_source_rgb(cr, 0.93, 0.93, 0.93);
@@ -259,100 +323,113 @@ void write_displacement_contours_png(const std::filesystem::path& path, const An
   const double h = w.grid.spacing;
   for (std::size_t j = 0; j < w.grid.nz; ++j) {
     for (std::size_t i = 0; i < w.grid.nx; ++i) {
-      const double v = w.at(i, j);
+      const double v = settlement.at(i, j);
       if (std::isnan(v)) continue;
-      set_colour(cr, map.of(v, -travel, travel));
+      set_colour(cr, scale.of(v));
       const double x0 = f.px((w.grid.x(i) - 0.5 * h) * mm), x1 = f.px((w.grid.x(i) + 0.5 * h) * mm);
       const double y0 = f.py((w.grid.z(j) + 0.5 * h) * mm), y1 = f.py((w.grid.z(j) - 0.5 * h) * mm);
-      cairo_rectangle(cr, std::floor(x0), std::floor(y0), std::ceil(x1) - std::floor(x0), std::ceil(y1) - std::floor(y0));
+      cairo_rectangle(cr, x0, y0, x1 - x0 + 0.3, y1 - y0 + 0.3);
       cairo_fill(cr);
     }
   }
   cairo_set_antialias(cr, CAIRO_ANTIALIAS_DEFAULT);
   draw_base_and_trapdoor(cr, f, r);
   cairo_restore(cr);
-  // Settlement contours (downward positive) at nice levels up to the largest settlement.
-  GridField settlement = w;
-  double largest = 0.0;
-  for (double& v : settlement.value) {
-    v = -v;
-    if (std::isfinite(v)) largest = std::max(largest, v);
-  }
-  std::vector<double> levels;
-  for (double v : nice_ticks(0.0, largest * mm, 8)) {
-    if (v > 0.0) levels.push_back(v / mm);
-  }
-  const double step_mm = levels.size() > 1 ? (levels[1] - levels[0]) * mm : 1.0;
-  draw_contours(cr, f, settlement, levels, [&](double v) { return format_tick(v * mm, step_mm); }, ContourStyle{});
-  figure.finish(path, fmt::format("{}: settlement contours (mm)", r.geometry.name),
-                fmt::format("{}; colour: vertical displacement w on the reference positions\ngrid {}; {}",
-                            displacement_text(r), format_mm(r.settings.grid_spacing), view_text(r)));
+  std::vector<double> levels_mm;
+  for (double v : levels) levels_mm.push_back(v * mm);
+  ContourStyle style;
+  style.line_width = 1.2;
+  draw_contours(cr, f, settlement, levels, [&](double v) { return contour_label(v * mm, levels_mm); }, style);
+  finish_settlement_map(page, scale);
+  page.canvas.write(path);
+  return f;
 }
 
-void write_particles_png(const std::filesystem::path& path, const AnalysisResult& r, int width) {
-  DisplacementMap figure(r, width);
-  cairo_t* cr = figure.canvas.cr();
-  const PlotFrame& f = figure.frame;
+PlotFrame write_particles_figure(const std::filesystem::path& path, const AnalysisResult& r, int width) {
+  MapPage page(r, width, fmt::format("{}: particles coloured by settlement", r.geometry.name),
+               fmt::format("{}; current positions, radius to scale; {}", displacement_text(r), view_text(r)));
+  cairo_t* cr = page.canvas.cr();
+  const PlotFrame& f = page.frame;
+  const SettlementScale scale{r.trapdoor_travel()};
   cairo_save(cr);
   f.clip(cr);
-  const double scale = f.scale_x();
+  const double units_per_mm = f.scale_x();
   for (std::size_t k = 0; k < r.points.size(); ++k) {
     const Point2 p = r.points.position[k] + r.points.displacement[k];
     cairo_new_sub_path(cr);
-    cairo_arc(cr, f.px(p.x * mm), f.py(p.z * mm), r.radius[k] * mm * scale, 0.0, 2.0 * M_PI);
-    set_colour(cr, figure.map.of(r.points.displacement[k].z, -figure.travel, figure.travel));
+    cairo_arc(cr, f.px(p.x * mm), f.py(p.z * mm), r.radius[k] * mm * units_per_mm, 0.0, 2.0 * M_PI);
+    set_colour(cr, scale.of(-r.points.displacement[k].z));
     cairo_fill_preserve(cr);
     cairo_set_source_rgba(cr, 0.2, 0.2, 0.2, 0.7);
-    cairo_set_line_width(cr, 0.8);
+    cairo_set_line_width(cr, 0.4);
     cairo_stroke(cr);
   }
   draw_base_and_trapdoor(cr, f, r);
   cairo_restore(cr);
-  figure.finish(path, fmt::format("{}: particles coloured by vertical displacement", r.geometry.name),
-                fmt::format("{}\ncurrent positions, radius to scale; {}", displacement_text(r), view_text(r)));
+  finish_settlement_map(page, scale);
+  page.canvas.write(path);
+  return f;
 }
 
-void write_strain_panel_png(const std::filesystem::path& path, const std::vector<const AnalysisResult*>& results,
-                            double vmax, int panel_width) {
-  if (results.empty()) return;
+std::vector<PlotFrame> write_strain_panel(const std::filesystem::path& path,
+                                          const std::vector<const AnalysisResult*>& results,
+                                          const std::vector<std::string>& labels, double vmax) {
+  std::vector<PlotFrame> frames;
+  if (results.empty()) return frames;
   if (!(vmax > 0.0)) {
     for (const auto* r : results) vmax = std::max(vmax, auto_strain_scale(*r));
   }
-  const double font = 15.0, left = left_margin * font / 16.0, bottom = bottom_margin * font / 16.0;
-  const double top = 110.0, right = 150.0, gap = 10.0;
-  double plot_h = 0.0;
-  for (const auto* r : results) plot_h = std::max(plot_h, map_height_for_width(*r, panel_width - left));
-  plot_h = std::min(plot_h, 900.0);
-  const int width = static_cast<int>(results.size() * (panel_width + gap) + right);
-  const int height = static_cast<int>(top + plot_h + bottom + 10.0);
-  Canvas canvas(width, height);
-  cairo_t* cr = canvas.cr();
-  double frame_top = top, frame_bottom = top + plot_h;
-  for (std::size_t k = 0; k < results.size(); ++k) {
-    const AnalysisResult& r = *results[k];
-    const Rect area{k * (panel_width + gap), top, static_cast<double>(panel_width), plot_h + bottom};
-    const PlotFrame f = draw_strain_map(cr, area, r, StrainKind::total, vmax, font);
-    frame_bottom = f.pixels().bottom();
-    TextStyle name{.size = 17.0, .bold = true, .h = HAlign::centre, .v = VAlign::bottom};
-    draw_text(cr, fmt::format("({}) {}", static_cast<char>('a' + k), r.geometry.name), f.pixels().x + 0.5 * f.pixels().w,
-              f.pixels().y - 26.0, name);
-    TextStyle sub{.size = 14.0, .colour = {0.3, 0.3, 0.3}, .h = HAlign::centre, .v = VAlign::bottom};
-    draw_text(cr, fmt::format("δ = {}, δ/B = {:.2f}", format_mm(r.trapdoor_travel()),
-                              r.trapdoor_travel() / r.geometry.trapdoor.width),
-              f.pixels().x + 0.5 * f.pixels().w, f.pixels().y - 6.0, sub);
+  const std::size_t n = results.size();
+  const std::size_t columns = n <= 4 ? 1 : 2;
+  const std::size_t rows = (n + columns - 1) / columns;
+  const double font = kFontSmall, left = left_margin(font), bottom = bottom_margin(font);
+  const double cell_w = columns == 1 ? kFigureWidth - kRightMargin : 0.5 * (1.3 * kFigureWidth - kRightMargin);
+  const double width = columns * cell_w + kRightMargin;
+  // One length scale: the widest box fills its cell; one vertical range: the union of the runs'.
+  double widest = 0.0, z_lo = 0.0, z_hi = 0.0;
+  for (const auto* r : results) {
+    widest = std::max(widest, x_range_mm(*r).span());
+    const Range1 z = z_range_mm(*r);
+    z_lo = std::min(z_lo, z.lo), z_hi = std::max(z_hi, z.hi);
   }
-  const bool smoothed = !results.empty() && shows_smoothed(*results.front(), StrainKind::total);
-  draw_text(cr,
-            fmt::format("Maximum shear strain γmax (total{}), one colour scale",
-                        smoothed ? fmt::format(", smoothed over a Gaussian of {:g} d",
-                                               results.front()->settings.bands.smoothing_diameters)
-                                 : std::string()),
-            20.0, 16.0,
-            TextStyle{.size = 20.0, .bold = true, .v = VAlign::top});
-  ColourBarStyle bar{.label = "γmax (-)", .extend_high = true};
-  draw_colour_bar(cr, {width - right + 30.0, frame_top + 20.0, 24.0, frame_bottom - frame_top - 20.0},
-                  ColourMap(ColourMapKind::viridis), 0.0, vmax, bar);
-  canvas.write_png(path);
+  const double units_per_mm = (cell_w - left - 8.0) / widest;
+  const double plot_h = (z_hi - z_lo) * units_per_mm;
+  const double label_h = 2.6 * font;  // "(a) label" and "δ = ..." above each map
+  // The x axis title under the last row only (every panel has the same x scale).
+  const double cell_h = label_h + plot_h + bottom - 1.5 * font + 6.0;
+  const bool smoothed = shows_smoothed(*results.front(), StrainKind::total);
+  const std::string title = fmt::format("Maximum shear strain γmax (total{}), one colour and length scale",
+                                        smoothed ? fmt::format(", smoothed over {:g} d",
+                                                               results.front()->settings.bands.smoothing_diameters)
+                                                 : std::string());
+  const double top = 10.0 + title_height(title, "", kFontTitle, width - 20.0) + 4.0;
+  Canvas canvas(static_cast<int>(std::ceil(width)), static_cast<int>(std::ceil(top + rows * cell_h + 1.5 * font)));
+  canvas.set_title(title);
+  cairo_t* cr = canvas.cr();
+  draw_title(cr, 10.0, 10.0, title, "", kFontTitle, width - 20.0);
+  for (std::size_t k = 0; k < n; ++k) {
+    const AnalysisResult& r = *results[k];
+    const double cell_x = (k % columns) * cell_w, cell_y = top + (k / columns) * cell_h;
+    const Range1 x = x_range_mm(r), z{z_lo, z_hi};
+    const PlotFrame f({cell_x + left, cell_y + label_h, x.span() * units_per_mm, plot_h}, x, z);
+    const ColourMap map(ColourMapKind::viridis);
+    const auto& values = strain_values(r, StrainKind::total);
+    fill_triangles(cr, f, r, [&](std::size_t t) { return map.of(values[t], 0.0, vmax); });
+    draw_band_traces(cr, f, r);
+    draw_specimen_axes(cr, f, font, k / columns + 1 == rows || k + columns >= n);
+    const std::string name = k < labels.size() && !labels[k].empty() ? labels[k] : r.geometry.name;
+    const double centre = f.pixels().x + 0.5 * f.pixels().w;
+    draw_text(cr, fmt::format("({}) {}", static_cast<char>('a' + k % 26), name), centre, cell_y + 1.15 * font,
+              TextStyle{.size = kFontLabel, .bold = true, .h = HAlign::centre, .v = VAlign::bottom});
+    draw_text(cr, short_displacement_text(r), centre, f.pixels().y - 4.0,
+              TextStyle{.size = font, .colour = {0.3, 0.3, 0.3}, .h = HAlign::centre, .v = VAlign::bottom});
+    frames.push_back(f);
+  }
+  const double bar_top = top + label_h + 16.0, bar_bottom = top + (rows - 1) * cell_h + label_h + plot_h;
+  draw_colour_bar(cr, {width - kRightMargin + kBarGap, bar_top, kBarWidth, bar_bottom - bar_top},
+                  ColourMap(ColourMapKind::viridis), 0.0, vmax, bar_style("γmax (-)", 1.0, true));
+  canvas.write(path);
+  return frames;
 }
 
 }  // namespace trapdem::plot

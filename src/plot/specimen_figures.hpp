@@ -1,16 +1,23 @@
 #pragma once
 // The figures of one analysed run (like the seed paper's Figures 5 and 7), drawn from an
-// AnalysisResult with lengths on the axes in mm:
+// AnalysisResult with lengths on the axes in mm, each written in the format its path's extension
+// names (PNG, SVG or PDF: canvas.hpp) and legible one journal column wide (text.hpp):
 //  - the maximum shear strain map over the box (constant-strain triangles on the reference
-//    centres), colour bar, trapdoor, traced band centres, title with case and displacement;
-//  - vertical displacement: settlement contours with labels over a diverging colour fill;
-//  - particles at their current positions, radius to scale, coloured by vertical displacement;
-//  - a panel of several runs' strain maps side by side with one shared colour scale (Figure 7).
+//    centres), colour bar, trapdoor, traced band centres;
+//  - the volumetric strain (dilation) map beside it: the same triangles on a diverging scale
+//    centred on 0, compression positive as the metrics state it;
+//  - settlement (downward displacement) contours with labels over a diverging colour fill, the
+//    colour bar in the same sign convention as the labels;
+//  - particles at their current positions, radius to scale, coloured by settlement;
+//  - a panel of several runs' strain maps on one colour scale and one length scale (Figure 7).
 #include <filesystem>
+#include <string>
 #include <vector>
 
 #include "analysis/analysis_run.hpp"
 #include "plot/axes.hpp"
+#include "plot/contour_plot.hpp"
+#include "plot/text.hpp"
 
 namespace trapdem::plot {
 
@@ -20,19 +27,36 @@ enum class StrainKind { total, incremental };
 // 5 x 10^k (values above saturate; the colour bar marks it).
 double auto_strain_scale(const AnalysisResult& result, StrainKind kind = StrainKind::total);
 
-// Draws the strain map with axes into `area` (pixels, axes labels inside it); no title, no bar.
-// Returns the frame used.
-PlotFrame draw_strain_map(cairo_t* cr, Rect area, const AnalysisResult& result, StrainKind kind, double vmax,
-                          double font_size = 16.0);
+// The volumetric strain the map shows: the total volumetric strain per triangle, compression
+// positive, smoothed as the shear strain map is (at the analysis's smoothing length).
+std::vector<double> shown_volumetric_strain(const AnalysisResult& result);
 
-// Figure sizes: width given, height follows the box's aspect.
-void write_strain_map_png(const std::filesystem::path& path, const AnalysisResult& result, StrainKind kind,
-                          double vmax = 0.0, int width = 1200);
-void write_displacement_contours_png(const std::filesystem::path& path, const AnalysisResult& result,
-                                     int width = 1200);
-void write_particles_png(const std::filesystem::path& path, const AnalysisResult& result, int width = 1200);
-// vmax = 0: the largest of the runs' auto scales.
-void write_strain_panel_png(const std::filesystem::path& path, const std::vector<const AnalysisResult*>& results,
-                            double vmax = 0.0, int panel_width = 560);
+// Draws the strain map with axes into `area` (layout units, axes labels inside it); no title, no
+// bar. Returns the frame used.
+PlotFrame draw_strain_map(cairo_t* cr, Rect area, const AnalysisResult& result, StrainKind kind, double vmax,
+                          double font_size = kFontSmall);
+
+// Each writes one figure `width` layout units wide (the height follows the box's aspect) and
+// returns the map's frame in layout units (a PNG has kPngPixelsPerUnit pixels per unit).
+PlotFrame write_strain_map(const std::filesystem::path& path, const AnalysisResult& result, StrainKind kind,
+                           double vmax = 0.0, int width = static_cast<int>(kFigureWidth));
+// vmax = 0: the 95th percentile of |volumetric strain| rounded up (nice_ceiling); the scale is
+// -vmax..vmax, white at 0.
+PlotFrame write_volumetric_strain_map(const std::filesystem::path& path, const AnalysisResult& result,
+                                      double vmax = 0.0, int width = static_cast<int>(kFigureWidth));
+// Levels in metres of settlement (downward positive); default: automatic 1-2-5 levels.
+PlotFrame write_displacement_contours(const std::filesystem::path& path, const AnalysisResult& result,
+                                      const ContourLevels& levels = {}, int width = static_cast<int>(kFigureWidth));
+PlotFrame write_particles_figure(const std::filesystem::path& path, const AnalysisResult& result,
+                                 int width = static_cast<int>(kFigureWidth));
+
+// Several runs' total strain maps, one colour scale (vmax = 0: the largest of the runs' auto
+// scales) and one length scale: every panel has the same mm per unit and the same vertical range,
+// so the boxes, bases and trapdoors line up. One column of panels for up to four runs (for one
+// journal column, 85 mm), two columns beyond (for a page width).
+// Panel titles: `labels[k]` (a study's case labels), else each run's name. Returns the frames.
+std::vector<PlotFrame> write_strain_panel(const std::filesystem::path& path,
+                                          const std::vector<const AnalysisResult*>& results,
+                                          const std::vector<std::string>& labels = {}, double vmax = 0.0);
 
 }  // namespace trapdem::plot

@@ -74,19 +74,89 @@ Rect draw_text_on_box(cairo_t* cr, const std::string& text, double x, double y, 
   return box;
 }
 
-void draw_title(cairo_t* cr, double x, double y, const std::string& title, const std::string& subtitle, double size) {
-  draw_text(cr, title, x, y, TextStyle{.size = size, .bold = true, .v = VAlign::top});
-  // The subtitle's lines are separated by '\n'.
-  double line_y = y + 1.45 * size;
+namespace {
+
+// A word that stays on the line of the word before it: a unit after its number ("3 mm"), and the
+// two sides of an equals sign ("δ = 3 mm").
+bool glued(const std::string& previous, const std::string& word) {
+  static const char* const units[] = {"mm", "m", "px", "d", "kPa", "Pa", "s", "%", "=", "−", "-"};
+  for (const char* u : units) {
+    if (word == u) return true;
+  }
+  return !previous.empty() && previous.back() == '=';
+}
+
+}  // namespace
+
+std::vector<std::string> wrap_text(cairo_t* cr, const std::string& text, const TextStyle& style, double max_width) {
+  std::vector<std::string> lines;
   std::size_t start = 0;
-  while (start < subtitle.size()) {
-    std::size_t end = subtitle.find('\n', start);
-    if (end == std::string::npos) end = subtitle.size();
-    draw_text(cr, subtitle.substr(start, end - start), x, line_y,
-              TextStyle{.size = 0.75 * size, .colour = {0.3, 0.3, 0.3}, .v = VAlign::top});
-    line_y += 1.2 * size;
+  while (start <= text.size()) {
+    std::size_t end = text.find('\n', start);
+    if (end == std::string::npos) end = text.size();
+    const std::string paragraph = text.substr(start, end - start);
+    // Words, with glued ones joined to the word before.
+    std::vector<std::string> words;
+    std::size_t word_start = 0;
+    while (word_start < paragraph.size()) {
+      std::size_t word_end = paragraph.find(' ', word_start);
+      if (word_end == std::string::npos) word_end = paragraph.size();
+      const std::string word = paragraph.substr(word_start, word_end - word_start);
+      if (!words.empty() && glued(words.back(), word)) words.back() += " " + word;
+      else words.push_back(word);
+      word_start = word_end + 1;
+    }
+    std::string line;
+    for (const std::string& word : words) {
+      const std::string longer = line.empty() ? word : line + " " + word;
+      if (!line.empty() && text_box(cr, longer, style).w > max_width) {
+        lines.push_back(line);
+        line = word;
+      } else {
+        line = longer;
+      }
+    }
+    if (!line.empty() || paragraph.empty()) lines.push_back(line);
     start = end + 1;
   }
+  return lines;
+}
+
+namespace {
+
+// Lays the title block out; draws it when `draw` (else measures only). Returns the y below it.
+double title_block(cairo_t* cr, double x, double y, const std::string& title, const std::string& subtitle,
+                   double size, double max_width, bool draw) {
+  const TextStyle heading{.size = size, .bold = true, .v = VAlign::top};
+  const TextStyle sub{.size = kFontSmall, .colour = {0.3, 0.3, 0.3}, .v = VAlign::top};
+  double line_y = y;
+  for (const std::string& line : wrap_text(cr, title, heading, max_width)) {
+    if (draw) draw_text(cr, line, x, line_y, heading);
+    line_y += 1.25 * size;
+  }
+  line_y += 0.15 * size;
+  if (subtitle.empty()) return line_y;
+  for (const std::string& line : wrap_text(cr, subtitle, sub, max_width)) {
+    if (draw) draw_text(cr, line, x, line_y, sub);
+    line_y += 1.2 * kFontSmall;
+  }
+  return line_y;
+}
+
+}  // namespace
+
+double draw_title(cairo_t* cr, double x, double y, const std::string& title, const std::string& subtitle, double size,
+                  double max_width) {
+  return title_block(cr, x, y, title, subtitle, size, max_width, true);
+}
+
+double title_height(const std::string& title, const std::string& subtitle, double size, double max_width) {
+  cairo_surface_t* scratch = cairo_image_surface_create(CAIRO_FORMAT_RGB24, 1, 1);
+  cairo_t* cr = cairo_create(scratch);
+  const double h = title_block(cr, 0.0, 0.0, title, subtitle, size, max_width, false);
+  cairo_destroy(cr);
+  cairo_surface_destroy(scratch);
+  return h;
 }
 
 }  // namespace trapdem::plot

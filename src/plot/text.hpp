@@ -4,6 +4,7 @@
 #include <cairo.h>
 
 #include <string>
+#include <vector>
 
 #include "plot/canvas.hpp"
 
@@ -31,8 +32,23 @@ Rect draw_text(cairo_t* cr, const std::string& text, double x, double y, const T
 Rect draw_text_on_box(cairo_t* cr, const std::string& text, double x, double y, const TextStyle& style,
                       Rgb background = {1.0, 1.0, 1.0}, double padding = 2.0);
 
-// A figure's title (bold) with a grey subtitle below it whose lines are separated by '\n';
-// (x, y) is the title's top left, `size` the title's font size (px).
-void draw_title(cairo_t* cr, double x, double y, const std::string& title, const std::string& subtitle, double size);
+// Type sizes (layout units) of the figures, for figures about kFigureWidth units wide: printed one
+// journal column wide (85 mm) the smallest text (tick numbers, legends, colour bars, contour labels)
+// is 7 pt (canvas.hpp's kMinFontFraction).
+inline constexpr double kFigureWidth = 640.0;
+inline constexpr double kFontSmall = 19.0;   // ticks, legend, colour bar, contour labels, subtitles
+inline constexpr double kFontLabel = 20.0;   // axis titles
+inline constexpr double kFontTitle = 22.0;   // figure titles, bold
+
+// `text` broken at spaces into lines no wider than `max_width` (a word longer than that stays whole);
+// '\n' always breaks.
+std::vector<std::string> wrap_text(cairo_t* cr, const std::string& text, const TextStyle& style, double max_width);
+
+// A figure's title (bold, `size`) with a grey subtitle (kFontSmall) below it, both wrapped to
+// `max_width`; (x, y) is the title's top left. Returns the y just below the last line.
+double draw_title(cairo_t* cr, double x, double y, const std::string& title, const std::string& subtitle, double size,
+                  double max_width);
+// The height draw_title takes, measured without drawing (to size a canvas before it exists).
+double title_height(const std::string& title, const std::string& subtitle, double size, double max_width);
 
 }  // namespace trapdem::plot

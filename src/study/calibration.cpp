@@ -235,7 +235,7 @@ Calibration calibrate(const CalibrateOptions& o) {
                                    "= {:.3f} %):", study.cases.size(), o.target, o.at, 100.0 * best.error);
   for (std::size_t i = 0; i < result.keys.size(); ++i) header += fmt::format(" {} = {}", result.keys[i].key, best.values[i]);
   write_text_atomically(result.out / "best.toml", header + "\n" + read_text_file(RunFolder(best.run_dir).resolved_toml()));
-  plot::write_error_surface_png(result.out / "error_surface.png", error_surface(result, grid, error_of_case, o.at));
+  plot::write_error_surface(result.out / "error_surface.png", error_surface(result, grid, error_of_case, o.at));
   for (std::size_t k = 0; k < study.cases.size(); ++k)
     if (study.cases[k].name == best.case_name) write_compare_figure(compared[k], result.out / "compare_best.png");
   write_study_outputs(study, scale, result.out, true);

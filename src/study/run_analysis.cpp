@@ -8,6 +8,7 @@
 #include "experiment/ground_reaction.hpp"
 #include "experiment/run_folder.hpp"
 #include "io/text_file.hpp"
+#include "plot/figure_format.hpp"
 #include "plot/line_chart.hpp"
 #include "plot/specimen_figures.hpp"
 
@@ -33,6 +34,17 @@ AnalysisSettings analysis_settings(const AnalyzeOptions& o) {
   s.bands.smoothing_diameters = o.smoothing;
   s.incremental = o.incremental;
   return s;
+}
+
+plot::ContourLevels contour_levels_option(const std::string& levels, const std::string& step) {
+  plot::ContourLevels c;
+  if (!levels.empty() && !step.empty()) throw InputError("--contour-levels and --contour-step exclude each other");
+  if (!levels.empty()) c.list = parse_length_list(levels, "--contour-levels");
+  if (!step.empty()) {
+    c.step = parse_length(step, "--contour-step");
+    if (!(c.step > 0.0)) throw InputError(fmt::format("--contour-step '{}': must be positive", step));
+  }
+  return c;
 }
 
 SpecimenGeometry specimen_geometry(const ExperimentConfig& e) {
@@ -73,15 +85,15 @@ fs::path analysis_output_dir(const AnalyzeOptions& o) {
 
 namespace {
 
-void write_ground_reaction_figure(const fs::path& csv, const fs::path& png, const SpecimenGeometry& g) {
+void write_ground_reaction_figure(const fs::path& csv, const fs::path& figure, const SpecimenGeometry& g) {
   const auto rows = parse_ground_reaction_csv(read_text_file(csv), csv.string());
   plot::LineChart chart;
   chart.title = fmt::format("{}: ground reaction curve", g.name);
   const double geostatic = rows.empty() ? 0.0 : rows.front().geostatic_stress;
-  chart.subtitle = fmt::format("stress over its value before lowering (trapdoor: {:.3g} kPa); B = {}", geostatic / 1e3,
+  chart.subtitle = fmt::format("stress σ over its value before lowering σ0 (trapdoor: {:.3g} kPa); B = {}", geostatic / 1e3,
                                format_mm(g.trapdoor.width));
-  chart.x_label = "trapdoor displacement / trapdoor width  δ/B (-)";
-  chart.y_label = "stress / stress before lowering (-)";
+  chart.x_label = "trapdoor displacement δ/B (-)";
+  chart.y_label = "stress ratio σ/σ0 (-)";
   chart.reference_y = {1.0};
   auto series = [](const char* name, plot::Rgb colour, bool dashed, double width) {
     plot::LineSeries s;
@@ -91,9 +103,9 @@ void write_ground_reaction_figure(const fs::path& csv, const fs::path& png, cons
     s.width = width;
     return s;
   };
-  plot::LineSeries trapdoor = series("trapdoor", {0.80, 0.10, 0.10}, false, 3.0);
-  plot::LineSeries left = series("base, left", {0.13, 0.40, 0.67}, true, 2.5);
-  plot::LineSeries right = series("base, right", {0.20, 0.60, 0.30}, true, 2.5);
+  plot::LineSeries trapdoor = series("trapdoor", {0.80, 0.10, 0.10}, false, 2.4);
+  plot::LineSeries left = series("base, left", {0.13, 0.40, 0.67}, true, 2.0);
+  plot::LineSeries right = series("base, right", {0.20, 0.60, 0.30}, true, 2.0);
   for (const auto& row : rows) {
     const double x = row.trapdoor_displacement / g.trapdoor.width;
     trapdoor.x.push_back(x);
@@ -104,33 +116,34 @@ void write_ground_reaction_figure(const fs::path& csv, const fs::path& png, cons
     right.y.push_back(row.base_right.ratio);
   }
   chart.series = {trapdoor, left, right};
-  plot::write_line_chart_png(png, chart);
+  plot::write_line_chart(figure, chart);
 }
 
 }  // namespace
 
 AnalysisResult analyze_and_write(const AnalyzeOptions& o, std::vector<fs::path>* written_files) {
+  // The figure options are checked before the analysis runs.
+  const plot::FigureFormat format = plot::parse_figure_format(o.format, "--format");
+  const plot::ContourLevels levels = contour_levels_option(o.contour_levels, o.contour_step);
   AnalysisResult r = analyze_directory(o);
   const AnalysisFolder out(analysis_output_dir(o));
   write_fields(out.fields_h5(), out.fields_xmf(), r);
   write_metrics(out.metrics_json(), r);
   std::vector<fs::path> written{out.fields_h5(), out.fields_xmf(), out.metrics_json()};
   if (!o.no_figures) {
-    plot::write_strain_map_png(out.shear_strain_png(), r, plot::StrainKind::total);
-    written.push_back(out.shear_strain_png());
+    const auto figure = [&](const fs::path& png) {
+      written.push_back(plot::with_format(png, format));
+      return written.back();
+    };
+    plot::write_strain_map(figure(out.shear_strain_png()), r, plot::StrainKind::total);
+    plot::write_volumetric_strain_map(figure(out.volumetric_strain_png()), r);
     if (r.has_incremental) {
-      plot::write_strain_map_png(out.shear_strain_incremental_png(), r, plot::StrainKind::incremental);
-      written.push_back(out.shear_strain_incremental_png());
+      plot::write_strain_map(figure(out.shear_strain_incremental_png()), r, plot::StrainKind::incremental);
     }
-    plot::write_displacement_contours_png(out.vertical_displacement_png(), r);
-    written.push_back(out.vertical_displacement_png());
-    plot::write_particles_png(out.particles_png(), r);
-    written.push_back(out.particles_png());
+    plot::write_displacement_contours(figure(out.vertical_displacement_png()), r, levels);
+    plot::write_particles_figure(figure(out.particles_png()), r);
     const fs::path csv = RunFolder(o.dir).trapdoor_csv();
-    if (fs::exists(csv)) {
-      write_ground_reaction_figure(csv, out.ground_reaction_png(), r.geometry);
-      written.push_back(out.ground_reaction_png());
-    }
+    if (fs::exists(csv)) write_ground_reaction_figure(csv, figure(out.ground_reaction_png()), r.geometry);
   }
   if (written_files) *written_files = written;
   return r;

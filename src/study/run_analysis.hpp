@@ -9,6 +9,7 @@
 
 #include "analysis/analysis_run.hpp"
 #include "experiment/experiment_config.hpp"
+#include "plot/contour_plot.hpp"
 
 namespace trapdem {
 
@@ -26,11 +27,18 @@ struct AnalyzeOptions {
   std::string config;                      // geometry; empty: DIR/resolved.toml
   std::string out;                         // empty: DIR/analysis
   bool no_figures = false;
+  std::string format = "png";              // figures: png | svg | pdf
+  std::string contour_levels;              // settlement contour levels "1mm,2mm,5mm"; empty: automatic
+  std::string contour_step;                // or a step "0.5mm"
   bool quiet = false;                      // no table on the terminal
 };
 
 // The settings the options describe (throws InputError on bad values).
 AnalysisSettings analysis_settings(const AnalyzeOptions& options);
+
+// The settlement contour levels --contour-levels / --contour-step describe (m; both empty:
+// automatic). Throws InputError naming the option on a bad length, both given, or a step <= 0.
+plot::ContourLevels contour_levels_option(const std::string& levels, const std::string& step);
 
 // The analysis' view of a specimen read by the experiment's configuration reader.
 SpecimenGeometry specimen_geometry(const ExperimentConfig& specimen);
@@ -44,8 +52,8 @@ AnalysisResult analyze_directory(const AnalyzeOptions& options);
 // Where the outputs go: options.out, else DIR/analysis.
 std::filesystem::path analysis_output_dir(const AnalyzeOptions& options);
 
-// The analysis with its outputs (fields, metrics.json, figures unless no_figures) written to
-// analysis_output_dir(options); the files written go to `written_files` if given.
+// The analysis with its outputs (fields, metrics.json, figures unless no_figures, in options.format)
+// written to analysis_output_dir(options); the files written go to `written_files` if given.
 AnalysisResult analyze_and_write(const AnalyzeOptions& options, std::vector<std::filesystem::path>* written_files = nullptr);
 
 }  // namespace trapdem

@@ -142,7 +142,7 @@ void write_compare_figure(CompareResult c, const fs::path& out) {
   fig.box_height = c.geometry.box_height - t.base_z;
   fig.trapdoor_width = t.width;
   fig.trapdoor_travel = delta;
-  plot::write_comparison_png(out, fig);
+  plot::write_comparison_figure(out, fig);
 }
 
 fs::path default_compare_figure(const CompareOptions& o, const CompareResult& c) {

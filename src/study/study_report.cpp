@@ -41,10 +41,10 @@ void write_ground_reaction_chart(const fs::path& png, const StudyReportInput& in
   chart.title = "Ground reaction curves";
   bool replicated = false;
   for (const StudyCaseResult& c : in.cases) replicated = replicated || c.ensemble.replicates.size() > 1;
-  chart.subtitle = replicated ? "trapdoor stress over its value before lowering; a case of several seeds: their mean"
-                              : "trapdoor stress over its value before lowering";
-  chart.x_label = "trapdoor displacement / trapdoor width  δ/B (-)";
-  chart.y_label = "trapdoor stress / stress before lowering (-)";
+  chart.subtitle = replicated ? "trapdoor stress σ over its value before lowering σ0; a case of several seeds: their mean"
+                              : "trapdoor stress σ over its value before lowering σ0";
+  chart.x_label = "trapdoor displacement δ/B (-)";
+  chart.y_label = "trapdoor stress ratio σ/σ0 (-)";
   chart.reference_y = {1.0};
   for (std::size_t k = 0; k < in.cases.size(); ++k) {
     const CaseSummary& s = in.cases[k].summary;
@@ -55,7 +55,7 @@ void write_ground_reaction_chart(const fs::path& png, const StudyReportInput& in
     series.y = s.grc_trapdoor_ratio;
     chart.series.push_back(std::move(series));
   }
-  plot::write_line_chart_png(png, chart);
+  plot::write_line_chart(png, chart);
 }
 
 std::string replicate_chart_file(const StudyCaseResult& c) { return "ground_reaction_" + c.summary.name + ".png"; }
@@ -66,15 +66,15 @@ void write_replicate_chart(const fs::path& png, const StudyCaseResult& c) {
   chart.title = fmt::format("{}: ground reaction curves of {} packing seeds", c.summary.label,
                             c.ensemble.replicates.size());
   chart.subtitle = "each seed (thin) and their mean (thick, black)";
-  chart.x_label = "trapdoor displacement / trapdoor width  δ/B (-)";
-  chart.y_label = "trapdoor stress / stress before lowering (-)";
+  chart.x_label = "trapdoor displacement δ/B (-)";
+  chart.y_label = "trapdoor stress ratio σ/σ0 (-)";
   chart.reference_y = {1.0};
   for (std::size_t k = 0; k < c.ensemble.replicates.size(); ++k) {
     const CaseSummary& r = c.ensemble.replicates[k];
     plot::LineSeries series;
     series.name = fmt::format("seed {}", r.seed);
     series.colour = plot::series_colour(k);
-    series.width = 1.2;
+    series.width = 1.0;
     series.x = r.grc_x_over_b;
     series.y = r.grc_trapdoor_ratio;
     chart.series.push_back(std::move(series));
@@ -82,11 +82,11 @@ void write_replicate_chart(const fs::path& png, const StudyCaseResult& c) {
   plot::LineSeries mean;
   mean.name = "mean";
   mean.colour = {0.0, 0.0, 0.0};
-  mean.width = 3.5;
+  mean.width = 2.6;
   mean.x = c.summary.grc_x_over_b;
   mean.y = c.summary.grc_trapdoor_ratio;
   chart.series.push_back(std::move(mean));
-  plot::write_line_chart_png(png, chart);
+  plot::write_line_chart(png, chart);
 }
 
 // A metric over a case's replicates for the page: "—" (none), the value (one), or the mean ± the
@@ -194,15 +194,19 @@ fs::path write_study_report(const fs::path& dir, const StudyReportInput& in) {
 
   // Figures first: the page never points at an image that is not there.
   std::vector<const AnalysisResult*> finals;
-  for (const StudyCaseResult& c : in.cases)
-    if (c.final_analysis) finals.push_back(c.final_analysis);
+  std::vector<std::string> panel_titles;  // the case labels
+  for (const StudyCaseResult& c : in.cases) {
+    if (!c.final_analysis) continue;
+    finals.push_back(c.final_analysis);
+    panel_titles.push_back(c.summary.label);
+  }
   double vmax = in.settings.max_strain;
   if (!(vmax > 0.0))
     for (const AnalysisResult* r : finals) vmax = std::max(vmax, plot::auto_strain_scale(*r));
   const bool has_panel = !finals.empty();
-  if (has_panel) plot::write_strain_panel_png(dir / "strain_panel.png", finals, vmax);
+  if (has_panel) plot::write_strain_panel(dir / "strain_panel.png", finals, panel_titles, vmax);
   for (const StudyCaseResult& c : in.cases)
-    if (c.contour_analysis) plot::write_displacement_contours_png(dir / contour_file(c), *c.contour_analysis, 900);
+    if (c.contour_analysis) plot::write_displacement_contours(dir / contour_file(c), *c.contour_analysis);
   write_ground_reaction_chart(dir / "ground_reaction.png", in);
   for (const StudyCaseResult& c : in.cases)
     if (c.ensemble.replicates.size() > 1) write_replicate_chart(dir / replicate_chart_file(c), c);

@@ -6,6 +6,8 @@
 
 #include <cmath>
 #include <filesystem>
+#include <fstream>
+#include <iterator>
 
 #include "plot/photo_figure.hpp"
 #include "plot/piv_figures.hpp"
@@ -78,11 +80,11 @@ plot::PivFigureData figure_data() {
   return d;
 }
 
-// The canvas pixel of an image pixel, as every figure of this photograph maps it.
-std::array<int, 2> canvas_pixel(double x, double y) {
-  const plot::PhotoFigure probe(96, 64, half_mm_per_px);
-  const auto p = probe.device_of_pixel(x, y);
-  return {static_cast<int>(std::floor(p[0])), static_cast<int>(std::floor(p[1]))};
+// The PNG pixel of an image pixel, where a figure placed its photograph.
+std::array<int, 2> canvas_pixel(const plot::PhotoPlacement& at, double x, double y) {
+  const auto p = at.device_of_pixel(x, y);
+  return {static_cast<int>(std::floor(p[0] * plot::kPngPixelsPerUnit)),
+          static_cast<int>(std::floor(p[1] * plot::kPngPixelsPerUnit))};
 }
 
 // Arrow red (0.80, 0.05, 0.05) or the quality figure's cross red (0.9, 0, 0), fully covered.
@@ -107,16 +109,18 @@ TEST(PhotoFigure, ProjectiveTransformDividesByTheThirdCoordinate) {
   EXPECT_NEAR(p[1], 103.0 / 1.1, 1e-12);
 }
 
-// The frame spans the photograph's pixel edges: x from -0.25 to 47.75 mm, z from -31.75 to 0.25 mm.
-// 1140 px of frame width over 48 mm -> 23.75 px/mm; 32 mm high -> 760 px, canvas 96 + 760 + 70.
+// The frame spans the photograph's pixel edges: x from -0.25 to 47.75 mm, z from -31.75 to 0.25 mm,
+// over the canvas width less the margins (4.4 font sizes left, 150 units right).
 TEST(PhotoFigure, PhotographLiesUnderTheFrameWhereTheTransformPutsIt) {
-  plot::PhotoFigure figure(96, 64, half_mm_per_px);
+  plot::PhotoFigure figure(96, 64, half_mm_per_px, "photograph", "");
+  const double frame_width = plot::kFigureWidth - 4.4 * plot::kFontSmall - 150.0;
   const plot::PlotFrame& f = figure.frame();
   EXPECT_NEAR(f.x_range().lo, -0.25, 1e-12);
   EXPECT_NEAR(f.x_range().hi, 47.75, 1e-12);
   EXPECT_NEAR(f.y_range().lo, -31.75, 1e-12);
   EXPECT_NEAR(f.y_range().hi, 0.25, 1e-12);
-  EXPECT_NEAR(figure.device_per_pixel(), 0.5 * 1140.0 / 48.0, 1e-9);
+  EXPECT_NEAR(figure.device_per_pixel(), 0.5 * frame_width / 48.0, 1e-9);
+  EXPECT_NEAR(f.pixels().h, frame_width * 32.0 / 48.0, 1e-9);
   // The affine pixel -> canvas map agrees with the frame's plot -> canvas map.
   for (const auto& [x, y] : {std::array<double, 2>{0.0, 0.0}, std::array<double, 2>{95.0, 63.0},
                              std::array<double, 2>{30.5, 12.25}}) {
@@ -131,13 +135,12 @@ TEST(PhotoFigure, PhotographLiesUnderTheFrameWhereTheTransformPutsIt) {
     for (int x = 0; x < 48; ++x) photo.grey[y * 96 + x] = 20;
   figure.draw_photograph(photo, 0.0);
   const fs::path png = scratch("photo") / "photo.png";
-  figure.write_png(png);
+  figure.write(png);
   const test::PngImage image = test::read_png(png);
-  ASSERT_EQ(image.width, 1400);
-  ASSERT_EQ(image.height, 96 + 760 + 70);
+  ASSERT_EQ(image.width, static_cast<int>(plot::kFigureWidth * plot::kPngPixelsPerUnit));
   for (const auto& [x, y, grey] : {std::array<int, 3>{10, 8, 20}, std::array<int, 3>{80, 8, 230},
                                    std::array<int, 3>{10, 56, 230}, std::array<int, 3>{80, 56, 230}}) {
-    const auto p = canvas_pixel(x, y);
+    const auto p = canvas_pixel(figure.placement(), x, y);
     EXPECT_EQ(image.red(p[0], p[1]), grey) << x << ", " << y;
     EXPECT_EQ(image.blue(p[0], p[1]), grey) << x << ", " << y;
   }
@@ -145,20 +148,20 @@ TEST(PhotoFigure, PhotographLiesUnderTheFrameWhereTheTransformPutsIt) {
 
 TEST(PivFigures, QualityMarksFlaggedAndUntexturedSubsets) {
   const fs::path png = scratch("quality") / "quality.png";
-  plot::write_piv_quality_png(png, figure_data());
+  const plot::PhotoPlacement at = plot::write_piv_quality_figure(png, figure_data());
   const test::PngImage image = test::read_png(png);
-  ASSERT_EQ(image.width, 1400);
+  ASSERT_EQ(image.width, static_cast<int>(plot::kFigureWidth * plot::kPngPixelsPerUnit));
   // The flagged subset (column 2): a red cross through its centre.
-  EXPECT_TRUE(red_near(image, canvas_pixel(24.0, 8.0), 2));
-  EXPECT_FALSE(red_near(image, canvas_pixel(32.0, 8.0), 2));
+  EXPECT_TRUE(red_near(image, canvas_pixel(at, 24.0, 8.0), 2));
+  EXPECT_FALSE(red_near(image, canvas_pixel(at, 32.0, 8.0), 2));
   // Without texture (columns 0 and 1): grey 0.55 at 0.75 over the photograph's 128.
   for (double x : {8.0, 16.0}) {
-    const auto p = canvas_pixel(x + 2.0, 10.0);
+    const auto p = canvas_pixel(at, x + 2.0, 10.0);
     EXPECT_NEAR(image.red(p[0], p[1]), 0.75 * 0.55 * 255 + 0.25 * 128, 2.0) << x;
     EXPECT_NEAR(image.blue(p[0], p[1]), 0.75 * 0.55 * 255 + 0.25 * 128, 2.0) << x;
   }
   // A valid subset: its ZNCC 0.95 on the viridis scale 0.6 to 1 (yellow-green: green well above blue), no cross.
-  const auto valid = canvas_pixel(48.0 + 2.0, 24.0 + 2.0);
+  const auto valid = canvas_pixel(at, 48.0 + 2.0, 24.0 + 2.0);
   EXPECT_GT(image.green(valid[0], valid[1]), image.blue(valid[0], valid[1]) + 80);
   EXPECT_LT(image.red(valid[0], valid[1]), image.green(valid[0], valid[1]));
 }
@@ -173,47 +176,62 @@ int count_arrow_pixels(const test::PngImage& image) {
 TEST(PivFigures, VectorsAreDrawnForValidSubsetsOnly) {
   const fs::path dir = scratch("vectors");
   plot::PivFigureData d = figure_data();
-  plot::write_piv_vectors_png(dir / "vectors.png", d);
+  const plot::PhotoPlacement at = plot::write_piv_vectors_figure(dir / "vectors.png", d);
   const test::PngImage image = test::read_png(dir / "vectors.png");
   // One arrow from each valid subset's centre in the direction of (1, 0.5) px: red a little way along it.
-  EXPECT_TRUE(red_near(image, canvas_pixel(40.0 + 0.6, 24.0 + 0.3), 2));
-  EXPECT_FALSE(red_near(image, canvas_pixel(40.0 + 0.3, 24.0 - 0.6), 2));  // across it
+  EXPECT_TRUE(red_near(image, canvas_pixel(at, 40.0 + 0.6, 24.0 + 0.3), 2));
+  EXPECT_FALSE(red_near(image, canvas_pixel(at, 40.0 + 0.3, 24.0 - 0.6), 2));  // across it
   EXPECT_GT(count_arrow_pixels(image), 50 * 20);
   for (auto& s : d.subsets) s.mark = SubsetMark::flagged;
-  plot::write_piv_vectors_png(dir / "none.png", d);
+  plot::write_piv_vectors_figure(dir / "none.png", d);
   EXPECT_EQ(count_arrow_pixels(test::read_png(dir / "none.png")), 0);
 }
 
 TEST(PivFigures, StrainTrianglesWhereTheSoilIsInTheImageShown) {
   const fs::path dir = scratch("strain");
   const plot::PivFigureData d = figure_data();
-  plot::write_piv_strain_png(dir / "total.png", d, false);
+  const plot::PhotoPlacement at = plot::write_piv_strain_figure(dir / "total.png", d, false);
   const test::PngImage image = test::read_png(dir / "total.png");
   // A triangle's centroid moved by (0.5, -0.25) mm = (1, 0.5) px: viridis' top (0xfde725) at 0.72 over 128.
-  const auto inside = canvas_pixel(30.0 + 1.0, 30.0 + 0.5);
+  const auto inside = canvas_pixel(at, 30.0 + 1.0, 30.0 + 0.5);
   EXPECT_NEAR(image.red(inside[0], inside[1]), 0.72 * 0xfd + 0.28 * 128, 3.0);
   EXPECT_NEAR(image.green(inside[0], inside[1]), 0.72 * 0xe7 + 0.28 * 128, 3.0);
   EXPECT_NEAR(image.blue(inside[0], inside[1]), 0.72 * 0x25 + 0.28 * 128, 3.0);
   // Just right of the last subset column (x = 80 px) but left of where it moved to (81 px): coloured.
-  const auto moved = canvas_pixel(80.5, 30.0);
+  const auto moved = canvas_pixel(at, 80.5, 30.0);
   EXPECT_LT(image.blue(moved[0], moved[1]), 100);
   // Beyond the last subset column: the photograph alone.
-  const auto outside = canvas_pixel(92.0, 58.0);
+  const auto outside = canvas_pixel(at, 92.0, 58.0);
   EXPECT_EQ(image.at(outside[0], outside[1]), 0x808080u);
-  plot::write_piv_strain_png(dir / "incremental.png", d, true);
-  EXPECT_EQ(test::read_png(dir / "incremental.png").width, 1400);
+  plot::write_piv_strain_figure(dir / "incremental.png", d, true);
+  EXPECT_EQ(test::read_png(dir / "incremental.png").width, static_cast<int>(plot::kFigureWidth * plot::kPngPixelsPerUnit));
 }
 
+// Settlement (downward positive) on the diverging map, as the contour labels and the colour bar.
 TEST(PivFigures, VerticalDisplacementColouredFromZeroToSettlement) {
   const fs::path png = scratch("displacement") / "w.png";
-  plot::write_piv_vertical_displacement_png(png, figure_data());
+  const plot::PhotoPlacement at = plot::write_piv_vertical_displacement_figure(png, figure_data());
   const test::PngImage image = test::read_png(png);
-  // Left column: no displacement, white over the faded photograph; right column: -0.25 mm, the
-  // diverging map's blue end (0x053061).
-  const auto left = canvas_pixel(9.0, 30.0), right = canvas_pixel(79.0, 30.0);
+  // Left column: no displacement, white over the faded photograph; right column: a settlement of
+  // 0.25 mm, the diverging map's red end (0x67001f).
+  const auto left = canvas_pixel(at, 9.0, 30.0), right = canvas_pixel(at, 79.0, 30.0);
   EXPECT_GT(image.red(left[0], left[1]), 200);
-  EXPECT_GT(image.blue(right[0], right[1]), image.red(right[0], right[1]) + 30);
-  EXPECT_LT(image.red(right[0], right[1]), 100);
+  EXPECT_GT(image.red(right[0], right[1]), image.blue(right[0], right[1]) + 30);
+  EXPECT_LT(image.blue(right[0], right[1]), 100);
+}
+
+// Vector figures keep the photograph as an embedded raster image, the marks as vector paths.
+TEST(PivFigures, SvgAndPdfEmbedThePhotograph) {
+  const fs::path dir = scratch("formats");
+  plot::write_piv_vectors_figure(dir / "vectors.svg", figure_data());
+  plot::write_piv_vectors_figure(dir / "vectors.pdf", figure_data());
+  std::ifstream svg_file(dir / "vectors.svg"), pdf_file(dir / "vectors.pdf", std::ios::binary);
+  const std::string svg((std::istreambuf_iterator<char>(svg_file)), {}), pdf((std::istreambuf_iterator<char>(pdf_file)), {});
+  EXPECT_EQ(svg.substr(0, 5), "<?xml");
+  EXPECT_NE(svg.find("<image"), std::string::npos);
+  EXPECT_NE(svg.find("<title>test: displacement vectors</title>"), std::string::npos);
+  EXPECT_EQ(pdf.substr(0, 5), "%PDF-");
+  EXPECT_NE(pdf.find("/Subtype /Image"), std::string::npos);
 }
 
 }  // namespace
