@@ -296,6 +296,70 @@ void check_settings(const TrapdoorGeometry& trapdoor, const ShearBandSettings& s
   }
 }
 
+// Mean squared horizontal distance (m^2) of `points` from the line fitted through `line_points`;
+// NaN if that line cannot be fitted (fewer than three points).
+double misfit_to_line(const std::vector<BandTracePoint>& points, const std::vector<BandTracePoint>& line_points) {
+  const TraceLineFit fit = fit_trace_line(line_points, 0.0, -std::numeric_limits<double>::infinity(),
+                                          std::numeric_limits<double>::infinity());
+  if (!std::isfinite(fit.slope) || points.empty()) return nan_value;
+  double sum = 0.0;
+  for (const auto& p : points) {
+    const double r = p.x - (fit.intercept + fit.slope * p.z);
+    sum += r * r;
+  }
+  return sum / static_cast<double>(points.size());
+}
+
+// The band is the continuation in line with it at a branch point. A band does not turn where a
+// branch leaves it (the seed paper's branches leave the main bands at an angle near the top), but
+// the tracer decides slab by slab: where a fluctuation interrupts the band for a slab or two just
+// where a branch parts, the branch's ridge is the only one in the step window and the trace turns
+// onto it; the band's own continuation is then found above as a "branch" of it. Decided here at
+// each branch height (where the branch's line meets the trace): the line through the first
+// direction_points points of each continuation (the trace above, the branch) is extended down,
+// and the one passing nearer (mean squared distance) to the trace's last 2 direction_points
+// points below is the band. Position and direction both count: the two ridges merge over ~6 d
+// near the parting point (docs/analysis.md), which bends the last few points below toward the
+// branch, so a direction read there alone would favour the branch. If the branch wins, the two
+// swap: the band runs on along the branch's ridge (with its end), and what the trace followed
+// from where it left the band becomes the branch.
+void keep_the_continuation_in_line(Chain& main, Chain& branch, const TrapdoorGeometry& trapdoor,
+                                   const ShearBandSettings& s) {
+  const double slab_height = s.slab_height_diameters * s.mean_diameter;
+  const double split_z =
+      trapdoor.base_z + branch_height(main.trace, branch.trace, s.direction_points, slab_height, trapdoor.base_z);
+  const auto above = std::find_if(main.trace.begin(), main.trace.end(),
+                                  [&](const BandTracePoint& p) { return p.z > split_z; });
+  const std::size_t n = std::max<std::size_t>(3, s.direction_points);
+  const auto below_count = static_cast<std::size_t>(above - main.trace.begin());
+  const auto above_count = static_cast<std::size_t>(main.trace.end() - above);
+  if (below_count < 3 || above_count < 3 || branch.trace.size() < 3) return;
+  const std::vector<BandTracePoint> below(above - static_cast<long>(std::min(2 * n, below_count)), above);
+  const std::vector<BandTracePoint> main_above(above, above + static_cast<long>(std::min(n, above_count)));
+  const std::vector<BandTracePoint> branch_start(branch.trace.begin(),
+                                                 branch.trace.begin() + static_cast<long>(std::min(n, branch.trace.size())));
+  if (!(misfit_to_line(below, branch_start) < misfit_to_line(below, main_above))) return;
+  // Where the trace left the band: the last points below the split that lie nearer the line of
+  // the trace above (now the branch) than the band's line went with the branch (at most
+  // direction_points of them), so that the branch's height is read where it parts.
+  auto parting = above;
+  for (std::size_t moved = 0; moved < n && parting - main.trace.begin() > 3; ++moved) {
+    const std::vector<BandTracePoint> point(parting - 1, parting);
+    if (!(misfit_to_line(point, main_above) < misfit_to_line(point, branch_start))) break;
+    --parting;
+  }
+  Chain band_on = main, branch_on = branch;
+  band_on.trace.assign(main.trace.begin(), parting);
+  band_on.trace.insert(band_on.trace.end(), branch.trace.begin(), branch.trace.end());
+  band_on.end = branch.end;
+  band_on.height_reached = branch.height_reached;
+  branch_on.trace.assign(parting, main.trace.end());
+  branch_on.end = main.end;
+  branch_on.height_reached = main.height_reached;
+  main = std::move(band_on);
+  branch = std::move(branch_on);
+}
+
 ShearBand trace_on(SlabStack& stack, const TrapdoorGeometry& trapdoor, const ShearBandSettings& s, BandSide side) {
   const double d = s.mean_diameter;
   ShearBand band;
@@ -321,11 +385,7 @@ ShearBand trace_on(SlabStack& stack, const TrapdoorGeometry& trapdoor, const She
     fill_band_metrics(band, trapdoor, s);  // no band: end none, height 0
     return band;
   }
-  const Chain main = follow_ridge(stack, peaks, seg, 0, first, trapdoor, s);
-  band.trace = main.trace;
-  band.end = main.end;
-  band.height_reached = main.height_reached;
-  fill_band_metrics(band, trapdoor, s);
+  Chain main = follow_ridge(stack, peaks, seg, 0, first, trapdoor, s);
 
   // Branches: a ridge at or above the threshold that appears within branch_reach of the band
   // (no unclaimed ridge at or above the threshold within the step window below it: it grows out
@@ -338,8 +398,9 @@ ShearBand trace_on(SlabStack& stack, const TrapdoorGeometry& trapdoor, const She
   std::vector<double> main_peaks;
   for (const auto& q : main.trace) main_peaks.push_back(q.peak);
   const double band_peak = median(std::move(main_peaks));
+  std::vector<Chain> branches;
   for (std::size_t k = 1; k <= std::min(last_slab + 1, stack.slabs.size() - 1); ++k) {
-    const double x_band = trace_x_at(band.trace, stack.slabs[k].z);
+    const double x_band = trace_x_at(main.trace, stack.slabs[k].z);
     for (std::size_t p = 0; p < peaks[k].size(); ++p) {
       const Peak& peak = peaks[k][p];
       if (peak.claimed || peak.value < s.ridge_threshold) continue;
@@ -348,7 +409,7 @@ ShearBand trace_on(SlabStack& stack, const TrapdoorGeometry& trapdoor, const She
         return !q.claimed && q.value >= s.ridge_threshold && std::abs(q.x - peak.x) <= window;
       });
       if (continues_lower_ridge) continue;
-      const Chain chain = follow_ridge(stack, peaks, seg, k, p, trapdoor, s);
+      Chain chain = follow_ridge(stack, peaks, seg, k, p, trapdoor, s);
       const double height = chain.trace.back().z - chain.trace.front().z + slab_height;
       std::vector<double> branch_peaks;
       for (const auto& q : chain.trace) branch_peaks.push_back(q.peak);
@@ -357,15 +418,26 @@ ShearBand trace_on(SlabStack& stack, const TrapdoorGeometry& trapdoor, const She
         for (const auto& [slab, q] : chain.used) peaks[slab][q].claimed = false;
         continue;
       }
-      BandBranch branch;
-      branch.trace = chain.trace;
-      branch.height = branch_height(band.trace, chain.trace, s.direction_points, slab_height, trapdoor.base_z);
-      const TraceLineFit fit = fit_trace_line(chain.trace, trapdoor.base_z, -std::numeric_limits<double>::infinity(),
-                                              std::numeric_limits<double>::infinity());
-      branch.angle_deg = band_angle_from_slope(fit.slope, side);
-      branch.angle_error_deg = band_angle_error_from_fit(fit);
-      band.branches.push_back(std::move(branch));
+      branches.push_back(std::move(chain));
     }
+  }
+  std::sort(branches.begin(), branches.end(),
+            [](const Chain& a, const Chain& b) { return a.trace.front().z < b.trace.front().z; });
+  for (Chain& branch : branches) keep_the_continuation_in_line(main, branch, trapdoor, s);
+
+  band.trace = main.trace;
+  band.end = main.end;
+  band.height_reached = main.height_reached;
+  fill_band_metrics(band, trapdoor, s);
+  for (const Chain& chain : branches) {
+    BandBranch branch;
+    branch.trace = chain.trace;
+    branch.height = branch_height(band.trace, chain.trace, s.direction_points, slab_height, trapdoor.base_z);
+    const TraceLineFit fit = fit_trace_line(chain.trace, trapdoor.base_z, -std::numeric_limits<double>::infinity(),
+                                            std::numeric_limits<double>::infinity());
+    branch.angle_deg = band_angle_from_slope(fit.slope, side);
+    branch.angle_error_deg = band_angle_error_from_fit(fit);
+    band.branches.push_back(std::move(branch));
   }
   std::sort(band.branches.begin(), band.branches.end(),
             [](const BandBranch& a, const BandBranch& b) { return a.height < b.height; });
