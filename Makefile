@@ -1,6 +1,8 @@
 # trapdem: the two Quick-start commands (make demo, make test) and the benchmarks.
 BUILD ?= build
 ASAN_BUILD ?= build-asan
+FUZZ_BUILD ?= build-fuzz
+FUZZ_SECONDS ?= 600
 JOBS ?= $(shell nproc)
 CMAKE_FLAGS ?=
 # make install: the program goes to $(PREFIX)/bin, the presets to $(PREFIX)/share/trapdem/presets.
@@ -8,7 +10,7 @@ PREFIX ?= /usr/local
 # ccache, where installed, shares compiled objects between build folders (build, build-asan).
 LAUNCHER := $(if $(shell command -v ccache),-DCMAKE_CXX_COMPILER_LAUNCHER=ccache)
 
-.PHONY: all deps configure build test test-slow test-asan demo study bench bench-peers install clean
+.PHONY: all deps configure build test test-slow test-asan fuzz demo study bench bench-peers install clean
 
 all: build
 
@@ -38,6 +40,17 @@ test-asan: deps
 	@cmake --build $(ASAN_BUILD) -j $(JOBS)
 	@cd $(ASAN_BUILD) && ctest --output-on-failure -j $(JOBS) -LE slow
 
+# libFuzzer over every reader of user input (tests/fuzz), FUZZ_SECONDS each, one after another,
+# built with clang and AddressSanitizer + UndefinedBehaviorSanitizer in its own folder. Findings:
+# $(FUZZ_BUILD)/findings, logs: $(FUZZ_BUILD)/logs.
+fuzz: deps
+	@cmake -S . -B $(FUZZ_BUILD) -DCMAKE_BUILD_TYPE=RelWithDebInfo -DCMAKE_C_COMPILER=clang-14 \
+	  -DCMAKE_CXX_COMPILER=clang++-14 -DTRAPDEM_FUZZ=ON -DTRAPDEM_SANITIZE="address;undefined;fuzzer-no-link" \
+	  -DTRAPDEM_BUILD_TESTS=OFF -DTRAPDEM_BUILD_BENCH=OFF -DTRAPDEM_MPI=OFF $(LAUNCHER) $(CMAKE_FLAGS) \
+	  > $(FUZZ_BUILD).cmake.log 2>&1 || (cat $(FUZZ_BUILD).cmake.log; exit 1)
+	@cmake --build $(FUZZ_BUILD) -j $(JOBS) --target fuzz
+	@FUZZ_SECONDS=$(FUZZ_SECONDS) bash tests/fuzz/run-fuzz.sh $(FUZZ_BUILD)
+
 demo: build
 	@bash scripts/demo.sh $(BUILD)
 
@@ -56,4 +69,4 @@ install: build
 	@cmake --install $(BUILD) --prefix $(PREFIX)
 
 clean:
-	rm -rf $(BUILD) $(BUILD).cmake.log $(ASAN_BUILD) $(ASAN_BUILD).cmake.log
+	rm -rf $(BUILD) $(BUILD).cmake.log $(ASAN_BUILD) $(ASAN_BUILD).cmake.log $(FUZZ_BUILD) $(FUZZ_BUILD).cmake.log

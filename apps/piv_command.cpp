@@ -11,9 +11,11 @@
 #include <opencv2/imgcodecs.hpp>
 
 #include "core/errors.hpp"
+#include "core/number_list.hpp"
 #include "experiment/run_folder.hpp"
 #include "io/atomic_file.hpp"
 #include "io/snapshot.hpp"
+#include "piv/control_point_file.hpp"
 #include "piv/dem_camera.hpp"
 #include "piv/displacement_csv.hpp"
 #include "piv/piv_output.hpp"
@@ -27,42 +29,6 @@ namespace fs = std::filesystem;
 namespace trapdem::app {
 
 namespace {
-
-std::vector<double> parse_numbers(const std::string& text, std::size_t count, const std::string& what) {
-  std::vector<double> v;
-  std::string item;
-  std::istringstream in(text);
-  while (std::getline(in, item, ',')) {
-    try {
-      std::size_t used = 0;
-      v.push_back(std::stod(item, &used));
-      if (item.find_first_not_of(" \t", used) != std::string::npos) throw std::invalid_argument(item);
-    } catch (const std::exception&) {
-      throw InputError(fmt::format("{} '{}': '{}' is not a number", what, text, item));
-    }
-  }
-  if (v.size() != count) throw InputError(fmt::format("{} '{}': expected {} numbers separated by commas", what, text, count));
-  return v;
-}
-
-std::vector<ControlPoint> read_control_points(const fs::path& file) {
-  std::ifstream in(file);
-  if (!in) throw InputError(fmt::format("{}: cannot open the control point file", file.string()));
-  std::vector<ControlPoint> points;
-  std::string line;
-  int number = 0;
-  while (std::getline(in, line)) {
-    ++number;
-    const auto first = line.find_first_not_of(" \t\r");
-    if (first == std::string::npos || line[first] == '#') continue;
-    if (!(std::isdigit(static_cast<unsigned char>(line[first])) || line[first] == '-' || line[first] == '.')) continue;  // header
-    std::string clean = line;
-    if (!clean.empty() && clean.back() == '\r') clean.pop_back();
-    const auto v = parse_numbers(clean, 4, fmt::format("{}:{}", file.string(), number));
-    points.push_back({{v[0], v[1]}, {v[2], v[3]}});
-  }
-  return points;
-}
 
 std::string image_label(const std::vector<std::string>& images) {
   if (images.empty()) return "PIV";
@@ -88,7 +54,7 @@ int run_piv_command(const PivOptions& o) {
   s.step = o.step;
   s.threads = o.threads;
   if (!o.roi.empty()) {
-    const auto v = parse_numbers(o.roi, 4, "--roi");
+    const auto v = parse_number_list(o.roi, 4, "--roi");
     for (double x : v) {
       if (x != std::floor(x)) throw InputError(fmt::format("--roi '{}': whole pixels expected", o.roi));
     }
@@ -103,7 +69,7 @@ int run_piv_command(const PivOptions& o) {
   if (o.scale) {
     cv::Point2d origin_px{0.0, 0.0};
     if (!o.origin.empty()) {
-      const auto v = parse_numbers(o.origin, 2, "--origin");
+      const auto v = parse_number_list(o.origin, 2, "--origin");
       origin_px = {-v[0] / *o.scale, v[1] / *o.scale};
     }
     if (!(*o.scale > 0.0)) throw InputError("--scale must be positive (mm per px)");
