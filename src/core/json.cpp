@@ -143,7 +143,7 @@ class Parser {
     return false;
   }
   std::string string() {
-    if (s_[i_] != '"') fail("expected a string");
+    if (i_ >= s_.size() || s_[i_] != '"') fail("expected a string");
     ++i_;
     std::string out;
     while (i_ < s_.size() && s_[i_] != '"') {
@@ -160,7 +160,8 @@ class Parser {
           case 'u': {
             if (i_ + 4 > s_.size()) fail("short \\u escape");
             unsigned code = 0;
-            std::from_chars(s_.data() + i_, s_.data() + i_ + 4, code, 16);
+            const auto [end, ec] = std::from_chars(s_.data() + i_, s_.data() + i_ + 4, code, 16);
+            if (ec != std::errc() || end != s_.data() + i_ + 4) fail("expected four hex digits after \\u");
             i_ += 4;
             if (code < 0x80) out += static_cast<char>(code);
             else out += '?';

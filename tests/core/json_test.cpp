@@ -22,3 +22,24 @@ TEST(Json, RoundTripsMetricsWithNullForNaN) {
   EXPECT_EQ(back["list"][1].as_string(), "x\"y");
   EXPECT_THROW(Json::parse("{\"a\": }"), InputError);
 }
+
+namespace {
+std::string parse_error(std::string_view text) {
+  try {
+    Json::parse(text, "f.json");
+  } catch (const InputError& e) {
+    return e.what();
+  }
+  return "(no error)";
+}
+}  // namespace
+
+// Found by tests/fuzz/json_fuzz.cpp: "[{" read the character past the end (a key expected at the
+// end of the text); "\uZZZZ" was taken as the character 0 and "\u12zz" as U+0012 without a word.
+TEST(Json, TextEndingWhereAKeyOrEscapeIsExpectedIsAnError) {
+  EXPECT_EQ(parse_error("[{"), "f.json: offset 2: expected a string");
+  EXPECT_EQ(parse_error("{\"a\": 1,"), "f.json: offset 8: expected a string");
+  EXPECT_EQ(parse_error("\"\\uZZZZ\""), "f.json: offset 3: expected four hex digits after \\u");
+  EXPECT_EQ(parse_error("\"\\u12zz\""), "f.json: offset 3: expected four hex digits after \\u");
+  EXPECT_EQ(Json::parse("\"\\u0041\"").as_string(), "A");
+}
