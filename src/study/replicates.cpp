@@ -11,10 +11,14 @@ ReplicateRequest read_replicate_request(Config& document, const std::string& tab
   ReplicateRequest r;
   const std::string count_key = prefix + "replicates", seeds_key = prefix + "seeds";
   const bool has_count = document.has(count_key), has_seeds = document.has(seeds_key);
-  if (has_count) r.count = document.require_int(count_key, Range::at_least(1));
+  if (has_count) r.count = document.require_int(count_key, Range::closed(1.0, double(kMaxReplicates)));
   if (has_seeds) {
-    const std::vector<std::int64_t> seeds = document.require_vector<std::int64_t>(seeds_key, "", Range::non_negative());
+    const std::vector<std::int64_t> seeds =
+        document.require_vector<std::int64_t>(seeds_key, "", Range::closed(0.0, double(kMaxSeed)));
     if (seeds.empty()) throw document.error(seeds_key, "at least one packing seed (integers >= 0)");
+    if (seeds.size() > std::size_t(kMaxReplicates))
+      throw document.error(seeds_key, fmt::format("at most {} seeds (one whole run each), not {}", kMaxReplicates,
+                                                  seeds.size()));
     for (std::size_t k = 0; k < seeds.size(); ++k)
       for (std::size_t j = 0; j < k; ++j)
         if (seeds[j] == seeds[k])

@@ -19,14 +19,20 @@ namespace trapdem {
 
 class Config;
 
+// Upper bounds (docs/study.md): each replicate is a whole run (minutes at the demo scale, days at
+// the paper's), so more than 1000 per case is a slip, not a plan; a seed is written to summary.json
+// as a JSON number (a double), exact up to 2^53 - 1.
+inline constexpr std::int64_t kMaxReplicates = 1000;
+inline constexpr std::int64_t kMaxSeed = (std::int64_t{1} << 53) - 1;
+
 struct ReplicateRequest {
   std::int64_t count = 0;              // replicates; 0: this level does not ask
   std::vector<std::uint64_t> seeds;    // explicit seeds (then count == seeds.size()), or empty
   bool asked() const { return count > 0; }
 };
 
-// Reads `replicates` and `seeds` under `table` ("" for the document's top level) strictly: N >= 1,
-// seeds non-negative integers without duplicates, and as many as `replicates` says when both are
+// Reads `replicates` and `seeds` under `table` ("" for the document's top level) strictly: N in
+// [1, kMaxReplicates], at most kMaxReplicates seeds, each an integer in [0, kMaxSeed], no duplicates, and as many as `replicates` says when both are
 // given. Throws InputError naming the file, line and key.
 ReplicateRequest read_replicate_request(Config& document, const std::string& table);
 

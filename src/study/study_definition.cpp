@@ -1,5 +1,6 @@
 #include "study/study_definition.hpp"
 
+#include <algorithm>
 #include <cctype>
 
 #include <fmt/format.h>
@@ -111,11 +112,24 @@ StudyDefinition load_study(const fs::path& file) {
     study.cases.push_back(std::move(c));
   }
   if (study.cases.empty()) throw document.error("cases", "at least one case");
+  // Every case is a whole run per replicate, listed in every table and figure of the report: a
+  // grid of cases past these bounds is a slip (a generated file gone wrong), not a study.
+  if (study.cases.size() > kMaxCases)
+    throw document.error("cases", fmt::format("at most {} cases (a run each, each in the report), not {}", kMaxCases,
+                                              study.cases.size()));
+  for (const StudyScale& scale : study.scales) {
+    std::int64_t runs = 0;
+    for (const StudyCase& c : study.cases) runs += std::max<std::int64_t>(1, case_replicates(study, c, scale).count);
+    if (runs > kMaxRuns)
+      throw document.error("scales." + scale.name,
+                           fmt::format("at most {} runs at a scale (cases times replicates), not {}", kMaxRuns, runs));
+  }
 
-  study.report.contours_at = document.get_double("report.contours_at", 0.01, "m", Range::positive());
+  // Bounds as trapdoor.travel's (docs/config.md) and a gamma_max colour scale up to 1000 %.
+  study.report.contours_at = document.get_double("report.contours_at", 0.01, "m", Range::open_closed(0.0, 10.0));
   study.report.angle_of_draw_deg = document.get_double("report.angle_of_draw", 30.0, "degrees from the vertical",
                                                        {0.0, 90.0, true, false});
-  study.report.max_strain = document.get_double("report.max_strain", 0.0, "-", Range::non_negative());
+  study.report.max_strain = document.get_double("report.max_strain", 0.0, "-", Range::closed(0.0, 10.0));
   study.report.element_test = document.get_bool("report.element_test", false);
   if (document.has("report.element")) {
     if (!document.is_table("report.element"))

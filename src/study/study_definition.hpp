@@ -15,6 +15,8 @@
 //   label = "RF1"
 //   [cases.rf1.set.contact]
 //   kinetic_friction = 0.2
+#include <cstddef>
+#include <cstdint>
 #include <filesystem>
 #include <string>
 #include <utility>
@@ -70,6 +72,11 @@ struct StudyDefinition {
   // Throws InputError naming the study file and listing the scales if `name` is not one of them.
   const StudyScale& scale(const std::string& name) const;
 };
+
+// Upper bounds of a study file (docs/study.md): cases, and runs at one scale (each case times its
+// replicates, study/replicates.hpp bounds those).
+inline constexpr std::size_t kMaxCases = 1000;
+inline constexpr std::int64_t kMaxRuns = 10000;
 
 // Reads a study file strictly (unknown keys reported with file:line). Relative configuration paths
 // are taken from the study file's folder. Throws InputError / FileError.

@@ -120,6 +120,40 @@ TEST(Replicates, MistakesNameTheFileLineAndKey) {
   EXPECT_NE(e.find("report.element_test = true"), std::string::npos) << e;
 }
 
+// The upper bounds of docs/study.md, each just past its bound and at it.
+TEST(Replicates, UpperBoundsNameTheKeyAndTheBound) {
+  const std::string base = "[scales.s]\npreset = \"tiny\"\n";
+  std::string e = error_of(base + "[cases.a]\nreplicates = 1001\n");
+  EXPECT_NE(e.find("cases.a.replicates = 1001"), std::string::npos) << e;
+  EXPECT_NE(e.find("in [1, 1000]"), std::string::npos) << e;
+  EXPECT_EQ(error_of(base + "[cases.a]\nreplicates = 1000\n"), "(no error)");
+  e = error_of(base + "[cases.a]\nseeds = [9007199254740992]\n");
+  EXPECT_NE(e.find("cases.a.seeds"), std::string::npos) << e;
+  EXPECT_NE(e.find("9007199254740991"), std::string::npos) << e;
+  EXPECT_EQ(error_of(base + "[cases.a]\nseeds = [9007199254740991]\n"), "(no error)");
+  std::string seeds = "0";
+  for (int k = 1; k <= 1000; ++k) seeds += fmt::format(", {}", k);
+  e = error_of(base + "[cases.a]\nseeds = [" + seeds + "]\n");
+  EXPECT_NE(e.find("at most 1000 seeds (one whole run each), not 1001"), std::string::npos) << e;
+  // Eleven cases of 1000 replicates: 11 000 runs at the scale.
+  std::string cases;
+  for (int k = 0; k < 11; ++k) cases += fmt::format("[cases.c{}]\nreplicates = 1000\n", k);
+  e = error_of(base + cases);
+  EXPECT_NE(e.find("scales.s"), std::string::npos) << e;
+  EXPECT_NE(e.find("at most 10000 runs at a scale (cases times replicates), not 11000"), std::string::npos) << e;
+  EXPECT_EQ(error_of(base + "replicates = 1000\n[cases.a]\nlabel = \"A\"\n[cases.b]\nlabel = \"B\"\n"), "(no error)");
+  cases.clear();
+  for (int k = 0; k < 1001; ++k) cases += fmt::format("[cases.c{}]\n", k);
+  e = error_of(base + cases);
+  EXPECT_NE(e.find("at most 1000 cases (a run each, each in the report), not 1001"), std::string::npos) << e;
+  e = error_of(base + "[cases.a]\n[report]\ncontours_at = 11.0\n");
+  EXPECT_NE(e.find("report.contours_at"), std::string::npos) << e;
+  EXPECT_NE(e.find("in (0, 10]"), std::string::npos) << e;
+  e = error_of(base + "[cases.a]\n[report]\nmax_strain = 1e3\n");
+  EXPECT_NE(e.find("report.max_strain"), std::string::npos) << e;
+  EXPECT_NE(e.find("in [0, 10]"), std::string::npos) << e;
+}
+
 TEST(ReplicateStatistics, MeanSampleStandardDeviationAndRange) {
   const Spread s = spread_of({1.0, 2.0, std::nan(""), 6.0});
   EXPECT_EQ(s.n, 3u);
