@@ -39,6 +39,10 @@ std::string percent_text(double x) { return fmt::format("{:.2f} %", 100.0 * x); 
 
 CompareResult compare_directories(const CompareOptions& o) {
   if (o.at.empty()) throw InputError("trapdem compare: give --at, the trapdoor displacement to compare (e.g. 10mm)");
+  // The option values first: a mistyped --at or --grid is reported before any file is read.
+  const double at = parse_length(o.at, "--at");
+  const double spacing = parse_length(o.grid, "--grid");
+  if (!(spacing > 0.0)) throw InputError("--grid must be positive");
   const RunFolder run(o.dem_dir);
   if (!fs::is_directory(run.path())) throw InputError(fmt::format("{}: no such run folder", run.path().string()));
   const SpecimenGeometry geometry = load_specimen_geometry(run.resolved_toml());
@@ -48,12 +52,10 @@ CompareResult compare_directories(const CompareOptions& o) {
   }
   fs::path piv_h5 = o.piv_dir;
   if (piv_h5.extension() != ".h5") piv_h5 /= "piv.h5";  // a PIV output folder
-  const double spacing = parse_length(o.grid, "--grid");
-  if (!(spacing > 0.0)) throw InputError("--grid must be positive");
 
   // DEM: vertical displacement from the start of lowering (0 mm) to --at, front view.
   AnalysisSettings settings;
-  settings.at = parse_length(o.at, "--at");
+  settings.at = at;
   settings.reference = 0.0;
   settings.grid_spacing = spacing;
   const AnalysisResult dem = analyze_snapshot_file(snapshots, geometry, settings);

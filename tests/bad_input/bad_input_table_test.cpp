@@ -108,6 +108,8 @@ const std::vector<BadInput>& table() {
       {"CompareMissingAt", "compare {RUN} {EMPTY}", nullptr, 106, "--at is required"},
       {"CompareRunWithoutSnapshots", "compare {RUN} {EMPTY} --at 10mm", nullptr, 2, "snapshots.h5: not found (run `trapdem run` first)"},
       {"CompareNoDemFolder", "compare {NOWHERE} {EMPTY} --at 10mm", nullptr, 2, "nowhere"},
+      {"CompareBadAtBeforeAnyFile", "compare {NOWHERE} {NOWHERE} --at 10pc", nullptr, 2, "--at '10pc'"},
+      {"CompareBadGridBeforeAnyFile", "compare {NOWHERE} {NOWHERE} --at 10mm --grid 0", nullptr, 2, "--grid must be positive"},
       {"CompareUnknownOption", "compare {RUN} {EMPTY} --at 10mm --colour red", nullptr, 109, "--colour"},
       // ---- piv and synth
       {"PivOneImage", "piv {IMG1} --out {EMPTY}/p", nullptr, 2, "give at least two images"},
@@ -137,6 +139,12 @@ const std::vector<BadInput>& table() {
       {"StudyNoScales", "study {IN} --out {EMPTY}/st", "name = \"s\"\n", 2, "scales: expected a table of scales"},
       {"StudyUnknownKey", "study {IN} --out {EMPTY}/st",
        "name = \"s\"\ncolour = 1\n[scales.demo]\npreset = \"tiny\"\n[cases.a]\nlabel = \"A\"\n", 2, "unknown key colour"},
+      {"StudyTooManyReplicates", "study {IN} --out {EMPTY}/st",
+       "[scales.s]\npreset = \"tiny\"\n[cases.a]\nreplicates = 5000\n", 2, "in [1, 1000]"},
+      {"StudySeedPastJsonExactness", "study {IN} --out {EMPTY}/st",
+       "[scales.s]\npreset = \"tiny\"\n[cases.a]\nseeds = [9007199254740993]\n", 2, "in [0, 9007199254740991]"},
+      {"StudyStrainScaleTooHigh", "study {IN} --out {EMPTY}/st",
+       "[scales.s]\npreset = \"tiny\"\n[cases.a]\nlabel = \"A\"\n[report]\nmax_strain = 1e9\n", 2, "report.max_strain"},
       {"StudyThreadsText", "study {IN} --threads abc", "name = \"s\"\n", 105, "expected 0 (all cores) or a thread count up to 4096"},
       // ---- calibrate
       {"CalibrateMissingVary", "calibrate {TINY} --target {EMPTY} --at 10mm", nullptr, 106, "--vary is required"},
