@@ -108,6 +108,23 @@ TEST(ResumeIdentity, AChangedConfigurationIsRefusedUnlessAllowed) {
   EXPECT_FALSE(run_in_folder(resume(run, 500)));
 }
 
+// A checkpoint written before the configuration was stored in it (an older trapdem): nothing to
+// compare, so the resume goes on with resolved.toml as it is, and says so in run.log.
+TEST(ResumeIdentity, ACheckpointWithoutAStoredConfigurationResumesWithANote) {
+  ScratchDir dir;
+  const fs::path run = dir / "run";
+  ASSERT_FALSE(run_in_folder(fresh(run, 300)));
+  Checkpoint old = read_checkpoint(run / "checkpoint.h5");
+  ASSERT_EQ(old.metadata.erase(RunRecorder::kConfiguration), 1u);
+  old.metadata.erase(RunRecorder::kConfigurationDigest);
+  write_checkpoint(run / "checkpoint.h5", old);
+  EXPECT_FALSE(run_in_folder(resume(run, 400)));
+  EXPECT_NE(read_all(run / "run.log").find("note: the checkpoint was written by an older trapdem and holds no "
+                                           "configuration; resolved.toml is taken as it is"),
+            std::string::npos);
+  EXPECT_EQ(read_checkpoint(run / "checkpoint.h5").stats.steps, 400);
+}
+
 // The kill of issue 14: the stage-end checkpoint at the end of spin-up (step N), then the lowering's
 // first snapshot at the same step N, then a kill before the next checkpoint. The resume must not
 // write that snapshot a second time, and ends as a run that went straight through.
