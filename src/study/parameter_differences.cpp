@@ -17,7 +17,7 @@ std::vector<ParameterDifference> differing_parameters(
   for (std::size_t c = 0; c < configurations.size(); ++c) {
     for (const auto& [key, value] : configurations[c]) {
       if (std::find(ignored.begin(), ignored.end(), key) != ignored.end()) continue;
-      if (std::none_of(lookup.begin(), lookup.end(), [&](const auto& m) { return m.count(key); }))
+      if (std::none_of(lookup.begin(), lookup.end(), [&key = key](const auto& m) { return m.count(key); }))
         order.push_back(key);
       lookup[c][key] = value;
     }
