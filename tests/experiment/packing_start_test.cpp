@@ -289,3 +289,45 @@ TEST(PackingStart, DensestPackingInTheNeighbourSearch) {
   EXPECT_GT(touching, 2 * now.size());
   fs::remove_all(dir);
 }
+
+// The [packing] keys are part of the run's identity: a resume with another shift is refused, the
+// same configuration carries on from the checkpoint (not from the file again) to the end.
+TEST(PackingStart, ResumeIdentityCoversThePackingKeys) {
+  omp_set_num_threads(1);
+  const fs::path dir = fresh_dir("resume");
+  write_lammps_data((dir / "bed.data").string(), lattice(2), {0, 0, 0}, {0.08, 0.014, 0.045});
+  FolderRunOptions o;
+  o.config_file = kTiny;
+  o.overrides = short_run((dir / "bed.data").string(), "lammps-data");
+  o.out_dir = dir / "run";
+  o.quiet = true;
+  o.threads = 1;
+  o.stop_at_step = 3000;
+  ASSERT_FALSE(run_in_folder(o));
+  // The folder's resolved.toml with another shift: the checkpoint's configuration differs.
+  const fs::path resolved = dir / "run" / "resolved.toml";
+  const std::string as_run = read_text_file(resolved);
+  std::string edited = as_run;
+  const std::string shift = "shift = [0.0, 0.0, 0.0]";
+  ASSERT_NE(edited.find(shift), std::string::npos) << as_run;
+  edited.replace(edited.find(shift), shift.size(), "shift = [0.0, 0.0, 0.001]");
+  std::ofstream(resolved) << edited;
+  FolderRunOptions resume;
+  resume.resume_dir = o.out_dir;
+  resume.quiet = true;
+  resume.threads = 1;
+  try {
+    run_in_folder(resume);
+    FAIL() << "expected the changed shift to be refused";
+  } catch (const InputError& e) {
+    EXPECT_NE(std::string(e.what()).find("packing.shift was [0.0, 0.0, 0.0] at the checkpoint"), std::string::npos)
+        << e.what();
+  }
+  std::ofstream(resolved) << as_run;
+  ASSERT_TRUE(run_in_folder(resume));
+  const auto snaps = list_snapshots(dir / "run" / "snapshots.h5");
+  EXPECT_EQ(snaps.front().stage, "packing");
+  EXPECT_EQ(std::count_if(snaps.begin(), snaps.end(), [](const SnapshotInfo& s) { return s.stage == "packing"; }), 1);
+  EXPECT_EQ(snaps.back().particle_count, lattice(2).size());
+  fs::remove_all(dir);
+}
