@@ -132,18 +132,17 @@ DumpAtoms parse_dump_atoms(const std::string& text, const std::string& source) {
       if (!missing.empty()) {
         in.fail(line, "the ATOMS columns lack" + missing + " (dump with: id x y z radius)");
       }
-      // Optional vectors: all three components or none.
-      auto optional_vector = [&](const char* const (&names)[3], const char* what) -> std::array<std::ptrdiff_t, 3> {
+      // Optional vectors, read when all three components are there (a lone vx is ignored, as
+      // other columns are).
+      auto optional_vector = [&](const char* const (&names)[3]) -> std::array<std::ptrdiff_t, 3> {
         std::array<std::ptrdiff_t, 3> c{};
         int found = 0;
         for (int k = 0; k < 3; ++k) found += (c[k] = find({names[k]}, unused)) >= 0;
-        if (found != 0 && found != 3)
-          in.fail(line, std::string("the ATOMS columns hold part of the ") + what + " (" + names[0] + " " + names[1] +
-                            " " + names[2] + "): expected all three or none");
+        if (found != 3) c = {-1, -1, -1};
         return c;
       };
-      const auto cv = optional_vector({"vx", "vy", "vz"}, "velocity");
-      const auto cw = optional_vector({"omegax", "omegay", "omegaz"}, "angular velocity");
+      const auto cv = optional_vector({"vx", "vy", "vz"});
+      const auto cw = optional_vector({"omegax", "omegay", "omegaz"});
       const std::ptrdiff_t cdensity = find({"density"}, unused);
       if ((scaled[0] || scaled[1] || scaled[2]) && !have_box) in.fail(line, "scaled coordinates need ITEM: BOX BOUNDS first");
       std::unordered_set<std::int64_t> seen;

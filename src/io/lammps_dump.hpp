@@ -2,8 +2,9 @@
 // LAMMPS / LIGGGHTS text dumps (`dump ... custom ... id x y z radius`), for runs made with other
 // DEM codes: one file per snapshot. Recognised: the ITEM: TIMESTEP, NUMBER OF ATOMS, BOX BOUNDS
 // and ATOMS sections; in ATOMS the columns id, x|xu|xs, y|yu|ys, z|zu|zs (scaled ones mapped with
-// the box bounds) and radius|diameter, in any order; optional vx vy vz (velocity), omegax omegay
-// omegaz (angular velocity) and density; other columns ignored.
+// the box bounds) and radius|diameter, in any order; optional vx vy vz (velocity) and omegax
+// omegay omegaz (angular velocity), each read when all three are there, and density; other
+// columns ignored.
 #include <filesystem>
 #include <string>
 #include <vector>
@@ -22,8 +23,8 @@ struct DumpAtoms {
 // Parses dump text; `source` names the file in messages. Returns id, position, radius and, where
 // the columns are there, velocity and angular velocity (else zero); step = the TIMESTEP. Throws
 // InputError "<source>:<line>: ..." on a missing section or column, a short or non-numeric line,
-// a wrong atom count, a repeated id, a velocity given in part (vx without vy, ...), a density that
-// is not positive, or a second timestep in the same file.
+// a wrong atom count, a repeated id, a density that is not positive, or a second timestep in the
+// same file.
 DumpAtoms parse_dump_atoms(const std::string& text, const std::string& source);
 Snapshot parse_dump(const std::string& text, const std::string& source);  // parse_dump_atoms(...).snapshot
 

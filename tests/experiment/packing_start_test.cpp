@@ -331,3 +331,18 @@ TEST(PackingStart, ResumeIdentityCoversThePackingKeys) {
   EXPECT_EQ(snaps.back().particle_count, lattice(2).size());
   fs::remove_all(dir);
 }
+
+// A dump's density column is the particles' density (else [particles].density, as above); a lone
+// vx column is no velocity.
+TEST(PackingStart, DumpDensityColumn) {
+  const fs::path dir = fresh_dir("density");
+  std::ofstream(dir / "bed.dump") << "ITEM: TIMESTEP\n0\nITEM: NUMBER OF ATOMS\n2\nITEM: ATOMS id x y z radius density vx\n"
+                                     "4 0.02 0.007 0.0022 0.002 3000 5\n9 0.03 0.007 0.0022 0.002 2000 5\n";
+  const ExperimentConfig c = config_with(short_run((dir / "bed.dump").string(), "lammps-dump"));
+  ASSERT_EQ(c.packing.particles->size(), 2u);
+  EXPECT_NEAR(c.packing.particles->density(0), 3000.0, 1e-9);
+  EXPECT_NEAR(c.packing.particles->density(1), 2000.0, 1e-9);
+  EXPECT_EQ(c.packing.particles->velocity[0], Vec3{});
+  EXPECT_EQ(c.packing.particles->id, (std::vector<std::int64_t>{4, 9}));
+  fs::remove_all(dir);
+}
