@@ -101,6 +101,13 @@ std::string outside_box(const Vec3& x, double r, const BoxConfig& box, double fr
 }  // namespace
 
 PackingParticles read_packing_file(const PackingConfig& c, double default_density) {
+  // A device or a pipe (/dev/zero, a FIFO) would be read without end: only files (and, for a
+  // trapdem run, its folder) are packings.
+  std::error_code ec;
+  const fs::file_status status = fs::status(c.from, ec);
+  if (fs::exists(status) && !fs::is_regular_file(status) && !(c.format == "trapdem" && fs::is_directory(status)))
+    throw InputError(fmt::format("packing.from = \"{}\": not a regular file; expected a {} file", c.from,
+                                 c.format == "trapdem" ? "snapshots.h5 (or a run folder)" : c.format));
   if (c.format == "lammps-data") return from_lammps_data(c);
   if (c.format == "lammps-dump") return from_dump(c, default_density);
   if (c.format == "trapdem") return from_snapshot(c, default_density);

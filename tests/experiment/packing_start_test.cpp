@@ -228,6 +228,9 @@ TEST(PackingStart, EachCheckNamesTheParticleAndLine) {
   const std::string as_dump = error_of(short_run(data.string(), "lammps-dump"));
   EXPECT_NE(as_dump.find(data.string() + ":1: expected an 'ITEM:' line"), std::string::npos) << as_dump;
   EXPECT_NE(error_of(short_run(data.string(), "xyz")).find("packing.format = \"xyz\""), std::string::npos);
+  // A device is no packing (it would be read without end).
+  EXPECT_NE(error_of(short_run("/dev/zero", "lammps-data")).find("packing.from = \"/dev/zero\": not a regular file"),
+            std::string::npos);
   // A snapshot index with a format that has none, and out of range of a run's snapshots.
   std::vector<std::string> o = short_run(data.string(), "lammps-data");
   o.push_back("packing.snapshot=0");
