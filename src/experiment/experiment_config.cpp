@@ -9,6 +9,7 @@
 #include <fmt/format.h>
 
 #include "core/thread_count.hpp"
+#include "experiment/packing_input.hpp"
 #include "io/config.hpp"
 
 namespace trapdem {
@@ -131,6 +132,44 @@ double read_fill_height(Config& pour, const BoxConfig& box) {
   return fill_height;
 }
 
+// [packing]: read only when the table is there, so that a run that pours records no packing key
+// (and its resume identity is what it was).
+void read_packing_keys(Config& c, PackingConfig& p) {
+  if (!c.has("packing")) return;
+  Config t = c.get_table("packing");
+  p.from = t.require_string("from");
+  if (t.has("from") && p.from.empty()) t.fail("from", "the path of a packing file, or of a trapdem run folder");
+  const std::vector<std::string> formats = {"lammps-data", "lammps-dump", "trapdem"};
+  if (t.has("format")) p.format = t.get_choice("format", "lammps-data", formats);
+  else t.fail("format", "a format for packing.from: \"lammps-data\", \"lammps-dump\" or \"trapdem\"");
+  if (t.has("snapshot")) {
+    if (p.format == "trapdem") p.snapshot = t.get_int("snapshot", 0, Range::closed(0.0, double(kMaxSnapshots)));
+    else t.fail("snapshot", "no snapshot index with this format (packing.snapshot picks a snapshot of format = \"trapdem\")");
+  }
+  const std::vector<double> shift = t.get_vector<double>("shift", {0.0, 0.0, 0.0}, "m", Range::closed(-kMaxLength, kMaxLength));
+  if (shift.size() == 3) p.shift = {shift[0], shift[1], shift[2]};
+  else t.fail("shift", fmt::format("three numbers [dx, dy, dz] in m (found {})", shift.size()));
+  p.start_at_spin_up = t.get_choice("start_stage", "settling", {"settling", "spin_up"}) == "spin_up";
+}
+
+// The packing file read and checked (after its keys passed): the sizes the box's margins, skin
+// and time step are derived from become the packing's, and the critical step its smallest.
+void load_packing(Config& c, ExperimentConfig& e) {
+  PackingParticles read = read_packing(e.packing, e.box, e.material.density, e.numerics.max_overlap_fraction);
+  const Particles& p = read.particles;
+  const auto [lo, hi] = std::minmax_element(p.radius.begin(), p.radius.end());
+  e.material.sizes = *lo == *hi ? SizeDistribution::single(2.0 * *lo) : SizeDistribution::uniform(2.0 * *lo, 2.0 * *hi);
+  double critical = std::numeric_limits<double>::infinity();
+  for (std::size_t i = 0; i < p.size(); ++i)
+    critical = std::min(critical, trapdem::critical_time_step(e.material.particle, e.material.wall_laws(), p.mass[i], p.radius[i]));
+  e.packing.critical_time_step = critical;
+  e.packing.particles = std::make_shared<const Particles>(std::move(read.particles));
+  if (e.numerics.time_step > critical)
+    throw c.error("numerics.time_step", fmt::format("a step at most the packing's critical step {} = {:.4g} s",
+                                                    critical_time_step_formula(e.material.particle, e.material.wall_laws()),
+                                                    critical));
+}
+
 double read_g_level(Config& spin, const SpinUpConfig& defaults) {
   return spin.get_double("g_level", defaults.g_level, "g", Range::closed(1.0, kMaxGLevel));
 }
@@ -226,11 +265,12 @@ ExperimentConfig ExperimentConfig::from(Config& c) {
       contact.fail("youngs_modulus", "the particles' Young's modulus in Pa: a wall has normal_model = \"hertz\"");
   }
 
+  read_packing_keys(c, e.packing);
   Config pour = c.get_table("pluviation");
   e.pluviation.count = pour.get_int("count", 0, Range::closed(0.0, double(kMaxParticles)));
   e.pluviation.fill_height = read_fill_height(pour, e.box);
-  if (e.pluviation.count == 0 && e.pluviation.fill_height == 0.0)
-    pour.fail("count", "a particle count or a fill_height (m) to end the pour");
+  if (e.pluviation.count == 0 && e.pluviation.fill_height == 0.0 && !c.has("packing"))
+    pour.fail("count", "a particle count or a fill_height (m) to end the pour, or a [packing] to start from");
   e.pluviation.drop_height = pour.get_double("drop_height", e.pluviation.drop_height, "m", Range::closed(0.0, kMaxDropHeight));
   e.pluviation.flow_rate = pour.get_double("flow_rate", 0.0, "kg/s", Range::closed(0.0, kMaxFlowRate));
   e.pluviation.packing_fraction =
@@ -292,6 +332,10 @@ ExperimentConfig ExperimentConfig::from(Config& c) {
                                       e.critical_time_step()));
   if (!c.has_errors()) check_step_counts(c, e);
   c.throw_errors();  // unknown keys, wrong values, broken rules: all of them, in that order
+  if (e.packing.enabled()) {
+    load_packing(c, e);
+    c.add_derived("derived.packing_particle_count", std::int64_t(e.packing.particles->size()));
+  }
   c.add_derived("derived.critical_time_step", e.critical_time_step(), "s");
   c.add_derived("derived.time_step", e.time_step(), "s");
   c.add_derived("derived.skin", e.skin(), "m");
@@ -313,6 +357,7 @@ ExperimentConfig ExperimentConfig::specimen_from(Config& c) {
 std::vector<const ContactLaw*> MaterialConfig::wall_laws() const { return {&base, &front, &back}; }
 
 double ExperimentConfig::critical_time_step() const {
+  if (packing.particles) return packing.critical_time_step;
   const double r = 0.5 * material.sizes.min_diameter();
   const double m_min = material.density * 4.0 / 3.0 * std::numbers::pi * r * r * r;
   return trapdem::critical_time_step(material.particle, material.wall_laws(), m_min, r);
@@ -325,6 +370,7 @@ double ExperimentConfig::time_step() const {
 double ExperimentConfig::skin() const { return numerics.skin_fraction * material.sizes.max_diameter(); }
 
 std::int64_t ExperimentConfig::expected_particle_count() const {
+  if (packing.particles) return std::int64_t(packing.particles->size());
   if (pluviation.count > 0) return pluviation.count;
   const double d = material.sizes.mean_diameter();
   const double volume = std::numbers::pi / 6.0 * d * d * d;

@@ -2,10 +2,13 @@
 // The trapdoor experiment's configuration: geometry, materials, stages, numerics and output, read
 // from TOML through the strict parameter dictionary (every key documented in docs/config.md).
 #include <cstdint>
+#include <memory>
 #include <string>
 #include <vector>
 
 #include "dem/contact_law.hpp"
+#include "dem/particles.hpp"
+#include "dem/vec3.hpp"
 #include "experiment/size_distribution.hpp"
 
 namespace trapdem {
@@ -47,6 +50,20 @@ struct PluviationConfig {
   std::uint64_t seed = 1;
 };
 
+// [packing]: start from particles made elsewhere instead of pouring (packing_input.hpp).
+struct PackingConfig {
+  std::string from;              // path of the file (or run folder); empty: the run pours
+  std::string format;            // "lammps-data", "lammps-dump" or "trapdem"
+  std::int64_t snapshot = -1;    // "trapdem": index in the file's snapshot list; -1: the last
+  Vec3 shift;                    // m, added to every position
+  bool start_at_spin_up = false; // start_stage = "spin_up" (else "settling")
+  // Read and checked by ExperimentConfig::from (file order, shift applied); null without [packing].
+  std::shared_ptr<const Particles> particles;
+  double critical_time_step = 0.0;  // s, the smallest over the packing's particles
+
+  bool enabled() const { return !from.empty(); }
+};
+
 struct SettlingConfig {
   double energy_ratio = 1e-6;  // settled when translational kinetic / potential energy falls below it
   double min_time = 0.01;      // s
@@ -80,6 +97,7 @@ struct ExperimentConfig {
   TrapdoorConfig trapdoor;
   MaterialConfig material;
   PluviationConfig pluviation;
+  PackingConfig packing;
   SettlingConfig settling;
   SpinUpConfig spin_up;
   NumericsConfig numerics;
@@ -99,11 +117,12 @@ struct ExperimentConfig {
   static ExperimentConfig specimen_from(Config& config);
 
   // s, trapdem::critical_time_step for the smallest particle (sqrt(m_min / k_max) for linear
-  // springs, the Rayleigh time for Hertz): the one the engine computes.
+  // springs, the Rayleigh time for Hertz): the one the engine computes. With a packing, the
+  // smallest over its particles.
   double critical_time_step() const;
   double time_step() const;           // s
   double skin() const;                // m
-  std::int64_t expected_particle_count() const;
+  std::int64_t expected_particle_count() const;  // with a packing: its particle count
 };
 
 }  // namespace trapdem

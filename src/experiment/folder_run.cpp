@@ -15,6 +15,7 @@
 #include "experiment/run_folder.hpp"
 #include "experiment/run_identity.hpp"
 #include "experiment/run_log.hpp"
+#include "experiment/run_progress.hpp"
 #include "experiment/run_ranks.hpp"
 #include "experiment/run_record.hpp"
 #include "experiment/run_recorder.hpp"
@@ -58,9 +59,13 @@ void describe_run(RunLog& recorder, const ExperimentConfig& c, const fs::path& o
                            c.material.particle.restitution, c.material.particle.static_friction,
                            c.material.particle.kinetic_friction, c.material.particle.rolling_friction,
                            to_string(c.material.particle.rolling_model)));
-  recorder.say(fmt::format("  time step {:.4g} s ({:.3g} of the critical {:.4g} s), skin {:.3g} mm, {} g, {} threads",
+  recorder.say(fmt::format("  time step {:.4g} s ({:.3g} of the critical {:.4g} s), skin {:.3g} mm, {} g, {}",
                            c.time_step(), c.time_step() / c.critical_time_step(), c.critical_time_step(),
-                           c.skin() * 1e3, c.spin_up.g_level, omp_get_max_threads()));
+                           c.skin() * 1e3, c.spin_up.g_level, threads_text(omp_get_max_threads())));
+  if (c.packing.particles)
+    recorder.say(fmt::format("  from the packing {} ({}, {} particles, shift [{}, {}, {}] m): no pour, starting at {}",
+                             c.packing.from, c.packing.format, c.packing.particles->size(), c.packing.shift.x,
+                             c.packing.shift.y, c.packing.shift.z, c.packing.start_at_spin_up ? "spin-up" : "settling"));
   recorder.say(fmt::format("  output in {}", out.string()));
 }
 
@@ -264,19 +269,22 @@ bool run_logged(const FolderRunOptions& o, std::optional<RunLog>& log) {
   const double seconds = now_seconds() - start;
   const Simulation& sim = experiment.simulation();
   const std::size_t particles = experiment.particle_count();
-  recorder.say(fmt::format("{} after {} of wall clock: {} steps, {} particles, {:.2f} M particle-steps/s",
-                           complete ? "finished" : "stopped (checkpoint written; carry on with --resume)",
-                           format_duration(seconds), sim.step_count() - start_steps, particles,
-                           seconds > 0 ? double(particles) * double(sim.step_count() - start_steps) / seconds / 1e6 : 0.0));
   if (complete) {
     std::map<std::string, std::string> state = experiment.state();
     recorder.checkpoint(state);  // the final state, so a later analysis or extension can start from it
   }
-  if (ranks) report_halo(recorder, *ranks, sim, sim.step_count() - start_steps);
+  // The last line's rate is run.json's: the run's particle-steps over its wall clock, every segment.
+  double per_second = 0.0;
   on_root(ranks, [&] {
-    record_run_segment(folder, RunSegment{complete, stage_name(experiment.stage()), seconds,
-                                          sim.step_count() - start_steps, experiment.particle_steps_run(), particles});
+    per_second = record_run_segment(folder, RunSegment{complete, stage_name(experiment.stage()), seconds,
+                                                       sim.step_count() - start_steps, experiment.particle_steps_run(),
+                                                       particles});
   });
+  recorder.say(fmt::format("{} after {} of wall clock: {} steps, {} particles, {:.2f} M particle-steps/s{}",
+                           complete ? "finished" : "stopped (checkpoint written; carry on with --resume)",
+                           format_duration(seconds), sim.step_count() - start_steps, particles, per_second / 1e6,
+                           resume ? " (the whole run's, as run.json)" : ""));
+  if (ranks) report_halo(recorder, *ranks, sim, sim.step_count() - start_steps);
   return complete;
 }
 

@@ -25,6 +25,24 @@ double Hopper::surface_height() const {
   return inserted_mass_ / (c.material.density * c.pluviation.packing_fraction * c.box.width * c.box.depth);
 }
 
+int Hopper::sites_along(int axis) const {
+  const BoxConfig& box = config_->box;
+  if (axis == 1 && box.periodic_depth) return std::max(1, int(box.depth / spacing_));
+  return std::max(1, int(((axis == 0 ? box.width : box.depth) - spacing_) / spacing_) + 1);
+}
+
+double Hopper::planned_duration(std::int64_t count) const {
+  const ExperimentConfig& c = *config_;
+  const double layers = std::ceil(double(count) / double(sites_along(0) * sites_along(1)));
+  double seconds = layers * interval_;
+  if (c.pluviation.flow_rate > 0.0) {
+    const double d = c.material.sizes.mean_diameter();
+    seconds = std::max(seconds, double(count) * c.material.density * std::numbers::pi / 6.0 * d * d * d /
+                                    c.pluviation.flow_rate);
+  }
+  return seconds;
+}
+
 bool Hopper::finished(const Simulation&) const {
   const PluviationConfig& p = config_->pluviation;
   if (p.count > 0 && inserted_ >= p.count) return true;
@@ -52,9 +70,7 @@ std::size_t Hopper::pour(Simulation& sim, Decomposition* ranks) {
   std::seed_seq seed{std::uint64_t(c.pluviation.seed), std::uint64_t(event_)};
   std::mt19937_64 rng(seed);
   const double margin = 0.5 * spacing_;
-  const int nx = std::max(1, int((c.box.width - 2.0 * margin) / spacing_) + 1);
-  const int ny = c.box.periodic_depth ? std::max(1, int(c.box.depth / spacing_))
-                                      : std::max(1, int((c.box.depth - 2.0 * margin) / spacing_) + 1);
+  const int nx = sites_along(0), ny = sites_along(1);
   std::vector<int> sites(std::size_t(nx) * ny);
   for (std::size_t k = 0; k < sites.size(); ++k) sites[k] = int(k);
   std::shuffle(sites.begin(), sites.end(), rng);

@@ -30,12 +30,17 @@ class Hopper {
   double surface_height() const;                               // m, estimated from the mass poured
   double entry_speed() const { return entry_speed_; }          // m/s
   bool flow_limited_by_band() const { return band_limited_; }  // the flow rate asked for was more than fits
+  // s of simulated time the pour of `count` particles should take: a layer of sites per insertion
+  // interval, or the flow rate's mass per second if that is slower (the progress estimate's prior).
+  double planned_duration(std::int64_t count) const;
 
   // State for checkpoints, as key=value pairs.
   std::map<std::string, std::string> state() const;
   void restore(const std::map<std::string, std::string>& state);
 
  private:
+  int sites_along(int axis) const;  // insertion sites across the box along x (0) or y (1)
+
   const ExperimentConfig* config_;
   double entry_speed_ = 0.0;      // m/s
   double spacing_ = 0.0;          // m, between insertion sites

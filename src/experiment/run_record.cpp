@@ -9,7 +9,7 @@ namespace fs = std::filesystem;
 
 namespace trapdem {
 
-void record_run_segment(const RunFolder& folder, const RunSegment& s) {
+double record_run_segment(const RunFolder& folder, const RunSegment& s) {
   const fs::path file = folder.run_json();
   double total_seconds = s.seconds, total_particle_steps = s.particle_steps;
   double total_steps = double(s.steps), segments = 1.0;
@@ -32,8 +32,10 @@ void record_run_segment(const RunFolder& folder, const RunSegment& s) {
   j.set("steps", total_steps);
   j.set("particle_steps", total_particle_steps);
   j.set("particles", s.particles);
-  j.set("particle_steps_per_second", total_seconds > 0.0 ? total_particle_steps / total_seconds : 0.0);
+  const double per_second = total_seconds > 0.0 ? total_particle_steps / total_seconds : 0.0;
+  j.set("particle_steps_per_second", per_second);
   write_text_atomically(file, j.dump() + "\n");
+  return per_second;
 }
 
 bool run_finished(const RunFolder& folder) {

@@ -20,8 +20,9 @@ struct RunSegment {
 };
 
 // Adds the segment to the folder's run.json (written atomically). An unreadable record (written by
-// another version) restarts the count: the run's results stand.
-void record_run_segment(const RunFolder& folder, const RunSegment& segment);
+// another version) restarts the count: the run's results stand. Returns the particle-steps per
+// second it records (the run's work over its wall clock, all segments), for the run's last line.
+double record_run_segment(const RunFolder& folder, const RunSegment& segment);
 
 // Whether run.json says the run finished (false if it is missing or unreadable: a resume then
 // finishes at once if the run had).

@@ -17,13 +17,6 @@ double now_seconds() {
   return std::chrono::duration<double>(std::chrono::steady_clock::now().time_since_epoch()).count();
 }
 
-std::string format_duration(double s) {
-  if (s < 0.0) return "?";
-  if (s < 120.0) return fmt::format("{:.0f} s", s);
-  if (s < 7200.0) return fmt::format("{:.1f} min", s / 60.0);
-  return fmt::format("{:.1f} h", s / 3600.0);
-}
-
 RunRecorder::RunRecorder(TrapdoorExperiment& experiment, RunFolder folder, RunLog* log, RunStopRules stop,
                          RunRanks* ranks)
     : experiment_(experiment), folder_(std::move(folder)), log_(log), stop_(stop), ranks_(ranks) {
@@ -33,11 +26,7 @@ RunRecorder::RunRecorder(TrapdoorExperiment& experiment, RunFolder folder, RunLo
   });
 }
 
-void RunRecorder::progress(const StageProgress& p) {
-  say(fmt::format("[{:<10}] {:5.1f}%  t = {:.4f} s  {:6.2f} M particle-steps/s  left {:>8}  {}", stage_name(p.stage),
-                  100.0 * p.fraction, p.simulated_time, p.particle_steps_per_second / 1e6,
-                  format_duration(p.seconds_left), p.detail));
-}
+void RunRecorder::progress(const StageProgress& p) { say(progress_line(p)); }
 
 void RunRecorder::stage_finished(Stage stage, const std::string& summary) {
   say(fmt::format("stage {} finished at t = {:.4f} s (step {}): {}", stage_name(stage),
@@ -53,8 +42,8 @@ void RunRecorder::snapshot_due(const std::string& label) {
     const std::string name =
         append_snapshot(folder_.snapshots_h5(), make_snapshot(particles, sim.time(), label,
                                                               experiment_.trapdoor_displacement(), sim.step_count()));
-    say(fmt::format("snapshot {} ({}, trapdoor at {:.2f} mm, {} particles)", name, label,
-                    experiment_.trapdoor_displacement() * 1e3, particles.size()));
+    say(fmt::format("snapshot {} ({}, trapdoor at {} mm, {} particles)", name, label,
+                    fixed_text(experiment_.trapdoor_displacement() * 1e3, 2), particles.size()));
   });
   ++snapshots_;
 }

@@ -67,8 +67,7 @@ class RunRecorder : public ExperimentObserver {
   std::int64_t calls_ = 0, stop_calls_ = 0;
 };
 
-// Seconds of a monotonic clock, and a duration for progress lines ("42 s", "3.5 min", "2.0 h").
+// Seconds of a monotonic clock (durations are written by format_duration, run_progress.hpp).
 double now_seconds();
-std::string format_duration(double seconds);
 
 }  // namespace trapdem

@@ -41,7 +41,8 @@ TrapdoorExperiment::TrapdoorExperiment(ExperimentConfig config) : config_(std::m
   s.skin = config_.skin();
   s.domain = strongbox_domain(config_);
   s.max_overlap_fraction = config_.numerics.max_overlap_fraction;
-  sim_ = std::make_unique<Simulation>(Particles{}, config_.material.particle, s);
+  sim_ = std::make_unique<Simulation>(config_.packing.particles ? *config_.packing.particles : Particles{},
+                                      config_.material.particle, s);
   for (Wall& w : strongbox_walls_for(config_)) sim_->add_wall(std::move(w));
   trapdoor_wall_ = sim_->find_wall(strongbox_walls::trapdoor);
   base_left_wall_ = sim_->find_wall(strongbox_walls::base_left);
@@ -50,7 +51,20 @@ TrapdoorExperiment::TrapdoorExperiment(ExperimentConfig config) : config_(std::m
   trapdoor_area_ = b * depth;
   base_left_area_ = (xc - 0.5 * b) * depth;
   base_right_area_ = (config_.box.width - xc - 0.5 * b) * depth;
-  start_stage(Stage::pluviation);
+  plan_.time_step = config_.time_step();
+  plan_.pour_seconds = config_.packing.particles ? 0.0 : hopper_.planned_duration(config_.expected_particle_count());
+  plan_.settling_max = config_.settling.max_time;
+  plan_.spin_up_max = config_.spin_up.ramp_time + config_.settling.max_time;
+  plan_.travel = config_.trapdoor.travel;
+  plan_.rate = config_.trapdoor.rate;
+  if (config_.packing.particles) {
+    // A packing made elsewhere (ExperimentConfig::from read and checked it) is the simulation's
+    // first particles: no pour. On ranks every rank builds it whole; attach_decomposition keeps
+    // each rank's share.
+    start_stage(config_.packing.start_at_spin_up ? Stage::spin_up : Stage::settling);
+  } else {
+    start_stage(Stage::pluviation);
+  }
 }
 
 void TrapdoorExperiment::attach_decomposition(std::unique_ptr<Decomposition> decomposition) {
@@ -60,7 +74,8 @@ void TrapdoorExperiment::attach_decomposition(std::unique_ptr<Decomposition> dec
 
 // The experiment removes no particle: every one the hopper inserted is in the box, on some rank.
 std::size_t TrapdoorExperiment::particle_count() const {
-  return decomposition_ ? std::size_t(hopper_.inserted()) : sim_->particles().size();
+  const std::size_t packed = config_.packing.particles ? config_.packing.particles->size() : 0;
+  return decomposition_ ? packed + std::size_t(hopper_.inserted()) : sim_->particles().size();
 }
 
 double TrapdoorExperiment::trapdoor_displacement() const { return -sim_->walls()[trapdoor_wall_].displacement.z; }
@@ -97,10 +112,6 @@ void TrapdoorExperiment::start_stage(Stage stage) {
   window_trapdoor_ = window_left_ = window_right_ = 0.0;
   window_steps_ = 0;
   install_gravity();
-  clock_start_ = wall_clock();
-  steps_at_clock_start_ = sim_->step_count();
-  fraction_at_clock_start_ = 0.0;
-  stage_at_clock_start_ = stage;
 }
 
 bool TrapdoorExperiment::settled(double& ratio) const {
@@ -137,9 +148,8 @@ void TrapdoorExperiment::begin_lowering(ExperimentObserver& observer) {
 }
 
 bool TrapdoorExperiment::run(ExperimentObserver& observer) {
-  clock_start_ = wall_clock();
-  steps_at_clock_start_ = sim_->step_count();
-  stage_at_clock_start_ = stage_;
+  // A run from a packing records it as its first snapshot ("packing"), as a pour's end is one.
+  if (config_.packing.particles && sim_->step_count() == 0) observer.snapshot_due("packing");
   report(observer, true);
   while (stage_ != Stage::done) {
     if (observer.stop_requested()) {
@@ -148,11 +158,12 @@ bool TrapdoorExperiment::run(ExperimentObserver& observer) {
     }
     if (observer.checkpoint_due()) observer.checkpoint(state());
     advance(observer);
-    particle_steps_run_ += double(particle_count());
-    if (sim_->step_count() % 200 == 0) report(observer, false);
+    const double particles = double(particle_count());  // those of the step just taken
+    particle_steps_run_ += particles;
+    particle_steps_total_ += particles;
+    if (sim_->step_count() % 200 == 0 && stage_ != Stage::done) report(observer, false);
   }
-  report(observer, true);
-  return true;
+  return true;  // the last stage's summary was its stage_finished: no progress line after it
 }
 
 bool TrapdoorExperiment::advance(ExperimentObserver& observer) {
@@ -242,9 +253,9 @@ bool TrapdoorExperiment::advance(ExperimentObserver& observer) {
         while (next_snapshot_ < targets.size() && s >= targets[next_snapshot_] - eps) ++next_snapshot_;
         observer.snapshot_due(stage_name(stage_));
         const GroundReactionRow& last = rows_.back();
-        observer.stage_finished(stage_, fmt::format("trapdoor lowered {:.2f} mm; trapdoor stress {:.4g} Pa = {:.3f} of "
+        observer.stage_finished(stage_, fmt::format("trapdoor lowered {} mm; trapdoor stress {:.4g} Pa = {:.3f} of "
                                                     "the {:.4g} Pa before lowering",
-                                                    s * 1e3, last.trapdoor.stress, last.trapdoor.ratio,
+                                                    fixed_text(s * 1e3, 2), last.trapdoor.stress, last.trapdoor.ratio,
                                                     geostatic_trapdoor_));
         stage_ = Stage::done;
         install_gravity();
@@ -271,8 +282,10 @@ void TrapdoorExperiment::report(ExperimentObserver& observer, bool force) {
   };
   switch (stage_) {
     case Stage::pluviation: {
+      // The pour's own end rule: the count, or the surface estimated from the mass at the fill height.
       const double expected = double(std::max<std::int64_t>(config_.expected_particle_count(), 1));
-      p.fraction = std::min(1.0, double(hopper_.inserted()) / expected);
+      p.fraction = std::min(1.0, config_.pluviation.count > 0 ? double(hopper_.inserted()) / expected
+                                                               : hopper_.surface_height() / config_.pluviation.fill_height);
       p.detail = fmt::format("{} particles poured, surface about {:.1f} mm", hopper_.inserted(),
                              hopper_.surface_height() * 1e3);
       break;
@@ -292,24 +305,27 @@ void TrapdoorExperiment::report(ExperimentObserver& observer, bool force) {
     case Stage::lowering:
     case Stage::done:
       p.fraction = std::min(1.0, trapdoor_displacement() / config_.trapdoor.travel);
-      p.detail = fmt::format("trapdoor at {:.2f} mm, stress ratio {:.3f}", trapdoor_displacement() * 1e3,
+      p.detail = fmt::format("trapdoor at {} mm, stress ratio {:.3f}", fixed_text(trapdoor_displacement() * 1e3, 2),
                              rows_.empty() ? 1.0 : rows_.back().trapdoor.ratio);
       break;
   }
-  const double elapsed = now - clock_start_;
-  const std::int64_t steps = sim_->step_count() - steps_at_clock_start_;
-  if (elapsed > 0.0) p.particle_steps_per_second = double(particle_count()) * double(steps) / elapsed;
-  if (stage_at_clock_start_ != stage_) {
-    clock_start_ = now;
-    steps_at_clock_start_ = sim_->step_count();
-    fraction_at_clock_start_ = p.fraction;
-    stage_at_clock_start_ = stage_;
-  } else if (stage_ == Stage::lowering && steps > 0) {
-    const double steps_left = (config_.trapdoor.travel - trapdoor_displacement()) / (config_.trapdoor.rate * sim_->time_step());
-    p.seconds_left = steps_left * elapsed / double(steps);
-  } else if (p.fraction > fraction_at_clock_start_ + 1e-6) {
-    p.seconds_left = (1.0 - p.fraction) * elapsed / (p.fraction - fraction_at_clock_start_);
-  }
+  // The whole run: its work done against the work ahead (run_progress.hpp), and the rate over a
+  // sliding window of wall clock.
+  RunPosition at;
+  at.stage = int(stage_);
+  at.particles = double(particle_count());
+  at.final_particles = stage_ == Stage::pluviation
+                           ? std::max(double(config_.expected_particle_count()), at.particles)
+                           : at.particles;
+  at.stage_time = t;
+  at.stage_steps = t / sim_->time_step();
+  at.pour_fraction = stage_ == Stage::pluviation ? p.fraction : 1.0;
+  at.travel_done = stage_ == Stage::lowering ? trapdoor_displacement() : 0.0;
+  const double ahead = work_ahead(plan_, at);
+  rate_.add(now, particle_steps_total_);
+  p.run_fraction = run_fraction_.update(particle_steps_total_, ahead);
+  p.particle_steps_per_second = rate_.per_second();
+  p.seconds_left = rate_.known() ? ahead / p.particle_steps_per_second : -1.0;
   observer.progress(p);
 }
 
@@ -329,6 +345,7 @@ std::map<std::string, std::string> TrapdoorExperiment::state() const {
   s["experiment.next_snapshot"] = fmt::to_string(next_snapshot_);
   s["experiment.next_row"] = fmt::to_string(next_row_);
   s["experiment.ground_reaction_csv"] = ground_reaction_csv(rows_);
+  s["experiment.particle_steps_total"] = bits(particle_steps_total_);
   return s;
 }
 
@@ -356,6 +373,8 @@ void TrapdoorExperiment::restore(const std::map<std::string, std::string>& s) {
   next_snapshot_ = std::stoul(get("experiment.next_snapshot"));
   next_row_ = std::stoll(get("experiment.next_row"));
   rows_ = parse_ground_reaction_csv(get("experiment.ground_reaction_csv"), "checkpoint ground reaction");
+  // Checkpoints of an earlier version do not have it: the progress then counts from the resume.
+  if (const auto it = s.find("experiment.particle_steps_total"); it != s.end()) particle_steps_total_ = dbl(it->first);
   install_gravity();
 }
 

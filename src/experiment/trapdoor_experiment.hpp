@@ -12,20 +12,12 @@
 #include "experiment/experiment_config.hpp"
 #include "experiment/ground_reaction.hpp"
 #include "experiment/pluviation.hpp"
+#include "experiment/run_progress.hpp"
 
 namespace trapdem {
 
 enum class Stage { pluviation = 0, settling = 1, spin_up = 2, lowering = 3, done = 4 };
 const char* stage_name(Stage stage);
-
-struct StageProgress {
-  Stage stage = Stage::pluviation;
-  double fraction = 0.0;                 // of the stage, 0..1
-  double simulated_time = 0.0;           // s
-  double particle_steps_per_second = 0.0;
-  double seconds_left = -1.0;            // wall clock estimate for the stage, < 0 if unknown
-  std::string detail;                    // what the stage measures (particles poured, energy ratio, ...)
-};
 
 // What the runner does with the experiment's events: log, write files, checkpoint, stop.
 class ExperimentObserver {
@@ -60,6 +52,8 @@ class TrapdoorExperiment {
   // Particle-steps (particles in the box, summed over steps) taken by run() calls of this object:
   // the work behind a run's particle-steps per second while the count grows during pluviation.
   double particle_steps_run() const { return particle_steps_run_; }
+  // The same since the run's first step (kept in checkpoints): the work done, for the progress line.
+  double particle_steps_total() const { return particle_steps_total_; }
   const ExperimentConfig& config() const { return config_; }
   Stage stage() const { return stage_; }
   double trapdoor_displacement() const;  // m, downward positive
@@ -96,13 +90,13 @@ class TrapdoorExperiment {
   std::size_t next_snapshot_ = 0;      // index into output.snapshot_displacements
   std::int64_t next_row_ = 0;          // next ground-reaction row at next_row_ * ground_reaction_step
   std::vector<GroundReactionRow> rows_;
+  double particle_steps_total_ = 0.0;   // since the run's first step (state)
   // Wall-clock bookkeeping for progress lines (not part of the state).
   double last_report_clock_ = -1e300;
-  double clock_start_ = 0.0;
   double particle_steps_run_ = 0.0;
-  std::int64_t steps_at_clock_start_ = 0;
-  double fraction_at_clock_start_ = 0.0;
-  Stage stage_at_clock_start_ = Stage::pluviation;
+  StagePlan plan_;
+  WorkRate rate_;
+  RunFraction run_fraction_;
 };
 
 }  // namespace trapdem

@@ -194,6 +194,7 @@ class Parser {
     Particles& p = data_.particles;
     p.reserve(end - begin);
     data_.type.reserve(end - begin);
+    data_.line.reserve(end - begin);
     for (std::size_t k = begin; k < end; ++k) {
       const Line& l = lines_[k];
       if (l.tokens.size() != 7 && l.tokens.size() != 10)
@@ -212,6 +213,7 @@ class Parser {
         fail(l.number, fmt::format("atom id {} appears twice; expected unique ids", id));
       p.add(id, x, 0.5 * diameter, density);
       data_.type.push_back(static_cast<int>(type));
+      data_.line.push_back(l.number);
       if (l.tokens.size() == 10) {
         Int3& im = p.image.back();
         im.x = static_cast<std::int32_t>(integer(l, 7, "ix", kAtomsColumns));

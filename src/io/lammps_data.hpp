@@ -23,6 +23,7 @@ struct LammpsData {
   std::string title;           // the first line
   Particles particles;         // radius = diameter / 2, mass from density; in file order
   std::vector<int> type;       // per particle, the LAMMPS atom type
+  std::vector<std::size_t> line;  // per particle, the 1-based line of its Atoms entry (for messages)
   Vec3 box_lower, box_upper;   // m: xlo ylo zlo, xhi yhi zhi
   bool has_velocities = false; // a Velocities section was read (else velocities are zero)
 };

@@ -1,5 +1,6 @@
 #include "io/lammps_dump.hpp"
 
+#include <array>
 #include <charconv>
 #include <cmath>
 #include <type_traits>
@@ -60,9 +61,10 @@ class Reader {
 
 }  // namespace
 
-Snapshot parse_dump(const std::string& text, const std::string& source) {
+DumpAtoms parse_dump_atoms(const std::string& text, const std::string& source) {
   Reader in(text, source);
-  Snapshot s;
+  DumpAtoms out;
+  Snapshot& s = out.snapshot;
   bool have_step = false, have_count = false, have_box = false, have_atoms = false;
   std::size_t count = 0;
   double lo[3] = {0, 0, 0}, hi[3] = {1, 1, 1};
@@ -130,6 +132,18 @@ Snapshot parse_dump(const std::string& text, const std::string& source) {
       if (!missing.empty()) {
         in.fail(line, "the ATOMS columns lack" + missing + " (dump with: id x y z radius)");
       }
+      // Optional vectors, read when all three components are there (a lone vx is ignored, as
+      // other columns are).
+      auto optional_vector = [&](const char* const (&names)[3]) -> std::array<std::ptrdiff_t, 3> {
+        std::array<std::ptrdiff_t, 3> c{};
+        int found = 0;
+        for (int k = 0; k < 3; ++k) found += (c[k] = find({names[k]}, unused)) >= 0;
+        if (found != 3) c = {-1, -1, -1};
+        return c;
+      };
+      const auto cv = optional_vector({"vx", "vy", "vz"});
+      const auto cw = optional_vector({"omegax", "omegay", "omegaz"});
+      const std::ptrdiff_t cdensity = find({"density"}, unused);
       if ((scaled[0] || scaled[1] || scaled[2]) && !have_box) in.fail(line, "scaled coordinates need ITEM: BOX BOUNDS first");
       std::unordered_set<std::int64_t> seen;
       s.id.reserve(count);
@@ -154,10 +168,24 @@ Snapshot parse_dump(const std::string& text, const std::string& source) {
           *comp[k] = v;
         }
         const double r = in.number<double>(w[static_cast<std::size_t>(cr)], l, is_radius ? "radius" : "diameter");
-        if (!(r > 0.0)) in.fail(l, "the radius must be positive");
+        if (!(r > 0.0)) in.fail(l, "the radius of atom " + std::to_string(id) + " must be positive");
         s.id.push_back(id);
         s.position.push_back(p);
         s.radius.push_back(is_radius ? r : 0.5 * r);
+        out.line.push_back(l + 1);
+        auto vector_at = [&](const std::array<std::ptrdiff_t, 3>& c, const char* what) {
+          if (c[0] < 0) return Vec3{};
+          return Vec3{in.number<double>(w[static_cast<std::size_t>(c[0])], l, what),
+                      in.number<double>(w[static_cast<std::size_t>(c[1])], l, what),
+                      in.number<double>(w[static_cast<std::size_t>(c[2])], l, what)};
+        };
+        s.velocity.push_back(vector_at(cv, "velocity"));
+        s.angular_velocity.push_back(vector_at(cw, "angular velocity"));
+        if (cdensity >= 0) {
+          const double rho = in.number<double>(w[static_cast<std::size_t>(cdensity)], l, "density");
+          if (!(rho > 0.0)) in.fail(l, "the density of atom " + std::to_string(id) + " must be positive");
+          out.density.push_back(rho);
+        }
       }
       have_atoms = true;
     } else {
@@ -165,20 +193,23 @@ Snapshot parse_dump(const std::string& text, const std::string& source) {
     }
   }
   if (!have_atoms) throw InputError(source + ": no ITEM: ATOMS section (not a LAMMPS/LIGGGHTS text dump?)");
-  const std::size_t n = s.id.size();
-  s.velocity.assign(n, Vec3{});
-  s.angular_velocity.assign(n, Vec3{});
-  s.image.assign(n, Int3{});
-  return s;
+  s.image.assign(s.id.size(), Int3{});
+  return out;
 }
 
-Snapshot read_dump_file(const std::filesystem::path& path) {
+Snapshot parse_dump(const std::string& text, const std::string& source) {
+  return std::move(parse_dump_atoms(text, source).snapshot);
+}
+
+DumpAtoms read_dump_atoms(const std::filesystem::path& path) {
   std::ifstream file(path, std::ios::binary);
   if (!file) throw FileError(path.string() + ": cannot open the dump file");
   std::ostringstream text;
   text << file.rdbuf();
   if (file.bad()) throw FileError(path.string() + ": cannot read the dump file");
-  return parse_dump(text.str(), path.string());
+  return parse_dump_atoms(text.str(), path.string());
 }
+
+Snapshot read_dump_file(const std::filesystem::path& path) { return std::move(read_dump_atoms(path).snapshot); }
 
 }  // namespace trapdem

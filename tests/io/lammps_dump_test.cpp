@@ -65,7 +65,7 @@ TEST(DumpReader, BadInputNamesFileAndLine) {
   EXPECT_EQ(error_of(std::string(header) + atoms + "1 0.1 0.005 0.05 0.001\nITEM: TIMESTEP\n2000\n"),
             "run.dump:11: expected 2 atom lines, found 1");
   EXPECT_EQ(error_of(std::string(header) + atoms + "1 0.1 0.005 0.05 0.001\n2 0.1 0.005 0.05 -1\n"),
-            "run.dump:11: the radius must be positive");
+            "run.dump:11: the radius of atom 2 must be positive");
   EXPECT_EQ(error_of(std::string(header) + atoms + "1 0.1 0.005 0.05 0.001\n2 0.1 0.005 0.05 0.001\nITEM: TIMESTEP\n5\n"),
             "run.dump:12: a second TIMESTEP: give one dump file per snapshot");
   EXPECT_EQ(error_of("ITEM: TIMESTEP\nabc\n"), "run.dump:2: timestep: 'abc' is not a number");

@@ -187,7 +187,7 @@ TEST_F(SlurmCluster, SubmittedStudyEndsWithTheNumbersOfALocalRun) {
   ASSERT_TRUE(fs::exists(out / "report" / "summary.json")) << "the report job wrote no report";
   EXPECT_EQ(measured(summary_of(out)), measured(summary_of(dir / "here")));
   for (const char* c : {"smooth", "rough"})
-    EXPECT_TRUE(contains(read_text_file(out / "cases" / c / "run.log"), ", 1 threads")) << c;
+    EXPECT_TRUE(contains(read_text_file(out / "cases" / c / "run.log"), ", 1 thread\n")) << c;
 
   // The report job started after both array tasks had ended, and they completed.
   std::string last_task_end, report_start;
