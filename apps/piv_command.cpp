@@ -98,10 +98,10 @@ int run_piv_command(const PivOptions& o) {
   }
   if (!o.contour_levels.empty()) {
     const auto count = static_cast<std::size_t>(std::count(o.contour_levels.begin(), o.contour_levels.end(), ',')) + 1;
-    figure_options.settlement_levels.list = parse_numbers(o.contour_levels, count, "--contour-levels");
+    figure_options.settlement_levels.list = parse_number_list(o.contour_levels, count, "--contour-levels");
   }
   if (!o.contour_step.empty()) {
-    figure_options.settlement_levels.step = parse_numbers(o.contour_step, 1, "--contour-step")[0];
+    figure_options.settlement_levels.step = parse_number_list(o.contour_step, 1, "--contour-step")[0];
     if (!(figure_options.settlement_levels.step > 0.0)) throw InputError("--contour-step must be positive");
   }
   std::vector<fs::path> files(o.images.begin(), o.images.end());
