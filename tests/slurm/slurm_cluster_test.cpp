@@ -27,6 +27,7 @@
 #include "experiment/run_record.hpp"
 #include "io/text_file.hpp"
 #include "study/cluster_process.hpp"
+#include "../study/tiny_study.hpp"
 #include "study_command.hpp"
 
 namespace fs = std::filesystem;
@@ -35,28 +36,9 @@ using namespace trapdem;
 namespace {
 
 // Two tiny cases differing in sliding friction, shortened as the study tests shorten them.
-const std::string kScale = R"([scales.test]
-description = "the tiny preset, a shallow pour and a short travel"
-preset = "tiny"
-[scales.test.set]
-pluviation.fill_height = 0.02
-settling.max_time = 0.04
-)";
-const std::string kStudy = "name = \"slurm-pair\"\n" + kScale + R"(trapdoor.travel = 0.003
-output.snapshot_displacements = [0.0, 0.001, 0.002, 0.003]
-[report]
-contours_at = 0.002
-[cases.smooth]
-label = "Smooth"
-[cases.smooth.set.contact]
-static_friction = 0.2
-kinetic_friction = 0.2
-[cases.rough]
-label = "Rough"
-[cases.rough.set.contact]
-static_friction = 0.6
-kinetic_friction = 0.6
-)";
+const std::string kScale = test::tiny_scale("the tiny preset, a shallow pour and a short travel");
+const std::string kStudy = "name = \"slurm-pair\"\n" + kScale + test::three_mm_of_travel + "[report]\ncontours_at = 0.002\n" +
+                           test::smooth_and_rough_cases;
 
 fs::path scratch(const std::string& name) {
   const fs::path dir = fs::temp_directory_path() / ("trapdem-slurm-" + name + "-" + std::to_string(::getpid()));

@@ -13,6 +13,7 @@
 #include <vector>
 
 #include "core/errors.hpp"
+#include "../study/tiny_study.hpp"
 #include "experiment/run_folder.hpp"
 #include "experiment/run_record.hpp"
 #include "io/text_file.hpp"
@@ -337,22 +338,9 @@ TEST(StudyStatus, AFolderWithoutAStudyIsAnError) {
 // is written with the unfinished run left out and named in study.log.
 TEST(Collect, RunsTheElementTestsAndReportsWithoutStartingARun) {
   const fs::path dir = scratch("collect");
-  write(dir / "study.toml", R"(name = "collect"
-[scales.test]
-preset = "tiny"
-[scales.test.set]
-contact.restitution = 0.9
-[report]
-element_test = true
-[report.element]
-particles = 200
-confining = [1.0e4]
-max_axial_strain = 0.05
-critical_state_window = 0.02
-row_strain = 0.005
-[cases.only]
-label = "Only"
-)");
+  write(dir / "study.toml", "name = \"collect\"\n[scales.test]\npreset = \"tiny\"\n[scales.test.set]\n"
+                            "contact.restitution = 0.9\n[report]\n" + test::small_element_test +
+                            "[cases.only]\nlabel = \"Only\"\n");
   const fs::path out = dir / "out";
   app::StudyOptions o;
   o.file = (dir / "study.toml").string();

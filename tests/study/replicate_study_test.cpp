@@ -15,6 +15,7 @@
 #include "core/json.hpp"
 #include "io/text_file.hpp"
 #include "study_command.hpp"
+#include "tiny_study.hpp"
 
 namespace fs = std::filesystem;
 using namespace trapdem;
@@ -25,37 +26,10 @@ namespace {
 // restitution 0.9: the element test's dense specimen does not come to rest with tiny's 0.5 within
 // its step limit (docs/study.md). The element test is shrunk to 200 spheres sheared to 5 %
 // (about ten seconds a case on one thread) at tiny's mid-depth stress, ~10 kPa.
-const char* kStudy = R"(name = "tiny-seeds"
-description = "Two tiny cases, two packing seeds each"
-replicates = 2
-[scales.test]
-preset = "tiny"
-[scales.test.set]
-pluviation.fill_height = 0.02
-settling.max_time = 0.04
-trapdoor.travel = 0.003
-output.snapshot_displacements = [0.0, 0.001, 0.002, 0.003]
-contact.restitution = 0.9
-[report]
-contours_at = 0.002
-element_test = true
-[report.element]
-particles = 200
-confining = [1.0e4]
-max_axial_strain = 0.05
-critical_state_window = 0.02
-row_strain = 0.005
-[cases.smooth]
-label = "Smooth"
-[cases.smooth.set.contact]
-static_friction = 0.2
-kinetic_friction = 0.2
-[cases.rough]
-label = "Rough"
-[cases.rough.set.contact]
-static_friction = 0.6
-kinetic_friction = 0.6
-)";
+const std::string kStudy = "name = \"tiny-seeds\"\ndescription = \"Two tiny cases, two packing seeds each\"\nreplicates = 2\n" +
+                           test::tiny_scale("the tiny preset, a shallow pour and 3 mm of travel") +
+                           test::three_mm_of_travel + "contact.restitution = 0.9\n[report]\ncontours_at = 0.002\n" +
+                           test::small_element_test + test::smooth_and_rough_cases;
 
 const char* kCases[] = {"smooth", "rough"};
 const int kSeeds[] = {7, 8};  // tiny's pluviation.seed is 7: 7 and 7 + 1

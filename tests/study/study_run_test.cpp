@@ -20,6 +20,7 @@
 #include "core/errors.hpp"
 #include "io/text_file.hpp"
 #include "study_command.hpp"
+#include "tiny_study.hpp"
 
 extern char** environ;
 
@@ -30,29 +31,9 @@ namespace {
 
 // Two tiny cases that differ in sliding friction; shortened (a shallow pour, 3 mm of travel) so that a
 // case takes a few seconds.
-const char* kStudy = R"(name = "tiny-pair"
-description = "Two tiny cases, smooth and rough grains"
-[scales.test]
-description = "the tiny preset, a shallow pour and 3 mm of travel"
-preset = "tiny"
-[scales.test.set]
-pluviation.fill_height = 0.02
-settling.max_time = 0.04
-trapdoor.travel = 0.003
-output.snapshot_displacements = [0.0, 0.001, 0.002, 0.003]
-[report]
-contours_at = 0.002
-[cases.smooth]
-label = "Smooth"
-[cases.smooth.set.contact]
-static_friction = 0.2
-kinetic_friction = 0.2
-[cases.rough]
-label = "Rough"
-[cases.rough.set.contact]
-static_friction = 0.6
-kinetic_friction = 0.6
-)";
+const std::string kStudy = "name = \"tiny-pair\"\ndescription = \"Two tiny cases, smooth and rough grains\"\n" +
+                           test::tiny_scale("the tiny preset, a shallow pour and 3 mm of travel") +
+                           test::three_mm_of_travel + "[report]\ncontours_at = 0.002\n" + test::smooth_and_rough_cases;
 
 fs::path scratch(const std::string& name) {
   const fs::path dir = fs::temp_directory_path() / ("trapdem-study-" + name + "-" + std::to_string(::getpid()));
