@@ -38,19 +38,7 @@ constexpr double kSpacing = 0.002;  // m, lattice spacing; radii 0.95-1.07 mm: n
 constexpr int kNx = 8, kNy = 8, kNz = 6;
 
 // The laws, each with the choices its instance below is compiled for.
-ContactLaw particle_law() {
-  ContactLaw law;
-  law.normal_stiffness = 2.0e4;
-  law.tangential_stiffness = 1.0e4;
-  law.restitution = 0.5;
-  law.static_friction = 0.4;
-  law.kinetic_friction = 0.3;
-  law.rolling_friction = 0.1;
-  law.rolling_model = RollingModel::elastic_plastic;
-  law.lever_arm = RollingLeverArm::effective_radius;
-  law.rolling_damping = 0.3;
-  return law;
-}
+ContactLaw particle_law() { return frictional_rolling_law(); }  // EPSD rolling, friction 0.4 / 0.3
 constexpr LawChoices kParticleChoices{NormalModel::linear, RollingModel::elastic_plastic,
                                       RollingLeverArm::effective_radius, RollingStiffness::ai2011, true};
 
@@ -77,18 +65,7 @@ constexpr LawChoices kSideChoices{NormalModel::linear, RollingModel::constant_to
 constexpr LawChoices kPlateChoices{};
 
 Simulation make_packing() {
-  Rng rng(2024);
-  Particles p;
-  std::int64_t id = 1;
-  for (int k = 0; k < kNz; ++k)
-    for (int j = 0; j < kNy; ++j)
-      for (int i = 0; i < kNx; ++i) {
-        const double r = rng.uniform(0.95e-3, 1.07e-3);
-        const Vec3 x{(i + 0.5) * kSpacing + rng.uniform(-5e-5, 5e-5), (j + 0.5) * kSpacing + rng.uniform(-5e-5, 5e-5),
-                     0.96e-3 + k * kSpacing + rng.uniform(-5e-5, 5e-5)};
-        const Vec3 v{rng.uniform(-0.05, 0.05), rng.uniform(-0.05, 0.05), rng.uniform(-0.05, 0.05)};
-        p.add(id++, x, r, kDensity, v, {rng.uniform(-50, 50), rng.uniform(-50, 50), rng.uniform(-50, 50)});
-      }
+  Particles p = jittered_lattice(2024, kNx, kNy, kNz, kSpacing, kDensity);
   SimulationSettings s;
   s.domain.lower = {-0.01, -0.01, -0.01};
   s.domain.upper = {0.03, 0.03, 0.03};

@@ -78,4 +78,41 @@ class Rng {
   std::uint64_t state_;
 };
 
+// Linear springs with friction and EPSD rolling resistance: pairs carry tangential and rolling springs.
+inline ContactLaw frictional_rolling_law() {
+  ContactLaw law;
+  law.normal_stiffness = 2.0e4;
+  law.tangential_stiffness = 1.0e4;
+  law.restitution = 0.5;
+  law.static_friction = 0.4;
+  law.kinetic_friction = 0.3;
+  law.rolling_friction = 0.1;
+  law.rolling_model = RollingModel::elastic_plastic;
+  law.lever_arm = RollingLeverArm::effective_radius;
+  law.rolling_damping = 0.3;
+  return law;
+}
+
+// A dense polydisperse packing: nx x ny x nz spheres on a cubic lattice of `spacing` (m), each
+// centre jittered by +-0.05 mm, radii 0.95-1.07 mm (neighbours at 2 mm overlap), ids 1..n in
+// lattice order, velocities `drift` + +-0.05 m/s and spins +-50 rad/s: every contact has a
+// relative velocity and a rolling motion, so every sub-model of the law is exercised.
+inline Particles jittered_lattice(std::uint64_t seed, int nx, int ny, int nz, double spacing, double density,
+                                  const Vec3& drift = Vec3{0.0, 0.0, 0.0}) {
+  Rng rng(seed);
+  Particles p;
+  std::int64_t id = 1;
+  for (int k = 0; k < nz; ++k)
+    for (int j = 0; j < ny; ++j)
+      for (int i = 0; i < nx; ++i) {
+        const double r = rng.uniform(0.95e-3, 1.07e-3);
+        const Vec3 x{(i + 0.5) * spacing + rng.uniform(-5e-5, 5e-5), (j + 0.5) * spacing + rng.uniform(-5e-5, 5e-5),
+                     0.96e-3 + k * spacing + rng.uniform(-5e-5, 5e-5)};
+        const Vec3 v{drift.x + rng.uniform(-0.05, 0.05), drift.y + rng.uniform(-0.05, 0.05),
+                     drift.z + rng.uniform(-0.05, 0.05)};
+        p.add(id++, x, r, density, v, {rng.uniform(-50, 50), rng.uniform(-50, 50), rng.uniform(-50, 50)});
+      }
+  return p;
+}
+
 }  // namespace trapdem::testing_support

@@ -30,18 +30,7 @@ constexpr int kNx = 16, kNy = 5, kNz = 5;
 constexpr double kDrift = 1.5;  // m/s along x, the packing's and the side wall's: particles cross slab boundaries
 
 Simulation make_packing() {
-  Rng rng(7);
-  Particles p;
-  std::int64_t id = 1;
-  for (int k = 0; k < kNz; ++k)
-    for (int j = 0; j < kNy; ++j)
-      for (int i = 0; i < kNx; ++i) {
-        const double r = rng.uniform(0.95e-3, 1.07e-3);
-        const Vec3 x{(i + 0.5) * kSpacing + rng.uniform(-5e-5, 5e-5), (j + 0.5) * kSpacing + rng.uniform(-5e-5, 5e-5),
-                     0.96e-3 + k * kSpacing + rng.uniform(-5e-5, 5e-5)};
-        const Vec3 v{kDrift + rng.uniform(-0.05, 0.05), rng.uniform(-0.05, 0.05), rng.uniform(-0.05, 0.05)};
-        p.add(id++, x, r, kDensity, v, {rng.uniform(-50, 50), rng.uniform(-50, 50), rng.uniform(-50, 50)});
-      }
+  Particles p = jittered_lattice(7, kNx, kNy, kNz, kSpacing, kDensity, Vec3{kDrift, 0.0, 0.0});
   SimulationSettings s;
   s.domain.lower = {-0.01, -0.01, -0.01};
   s.domain.upper = {0.05, 0.03, 0.03};

@@ -76,19 +76,4 @@ inline Difference compare_with_serial(const Simulation& decomposed, const Simula
   return difference(all, reference);
 }
 
-// Linear springs with friction and EPSD rolling resistance: pairs carry tangential and rolling springs.
-inline ContactLaw frictional_rolling_law() {
-  ContactLaw law;
-  law.normal_stiffness = 2.0e4;
-  law.tangential_stiffness = 1.0e4;
-  law.restitution = 0.5;
-  law.static_friction = 0.4;
-  law.kinetic_friction = 0.3;
-  law.rolling_friction = 0.1;
-  law.rolling_model = RollingModel::elastic_plastic;
-  law.lever_arm = RollingLeverArm::effective_radius;
-  law.rolling_damping = 0.3;
-  return law;
-}
-
 }  // namespace trapdem::testing_support
