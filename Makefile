@@ -58,12 +58,17 @@ demo: build
 study: build
 	@$(BUILD)/apps/trapdem study studies/paper-table2.toml --quiet
 
+# The MPI cases (2 ranks x 1 thread against 1 rank x 2 threads) run where the build has MPI.
 bench: build
 	@bash bench/run-bench.sh $(BUILD)
+	@if [ -x $(BUILD)/bench/mpi_standard ]; then NO_PEERS=1 bash bench/run-mpi.sh $(BUILD); fi
 
+# The peers on 1 and 2 ranks, trapdem on 1 and 2 threads, then trapdem on 2 ranks against the
+# peers' 2-rank results of this same run.
 bench-peers: build
 	@bash scripts/install-deps --peers
 	@bash bench/run-peers.sh $(BUILD)
+	@if [ -x $(BUILD)/bench/mpi_standard ]; then NO_PEERS=1 PEERS_THIS_RUN=1 bash bench/run-mpi.sh $(BUILD); fi
 
 install: build
 	@cmake --install $(BUILD) --prefix $(PREFIX)

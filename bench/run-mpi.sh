@@ -8,7 +8,9 @@
 # and the ratios 2 ranks / 2 threads and trapdem / peer on 2 ranks. Records no conclusion: run it
 # on a quiet host.
 # Usage: bash bench/run-mpi.sh [BUILD]
-# Env: REPS (3), SIZES ("0.1 0.4"), STEPS_S, STEPS_L, STEPS_XL, WARMUP (300), CODES, PEERS, BENCH_DATA, NO_PEERS.
+# Env: REPS (3), SIZES ("0.1 0.4"), STEPS_S, STEPS_L, STEPS_XL, WARMUP (300), CODES, PEERS, BENCH_DATA, NO_PEERS,
+#      PEERS_THIS_RUN (1: NO_PEERS, but the peers' 2-rank results in BENCH_DATA come from the same
+#      invocation, as `make bench-peers` runs run-peers.sh first; otherwise they are not compared).
 SIZES=${SIZES:-"0.1 0.4"}
 source "$(dirname "$0")/common.sh"
 REPS=${REPS:-3}
@@ -50,16 +52,18 @@ if [ "${NO_PEERS:-0}" != 1 ]; then
     { tail -20 "$DATA/peers_mpi.out" >&2; echo "bench-mpi: run_all.sh failed" >&2; exit 1; }
 fi
 
-python3 - "$DATA" <<'PY'
+PEER_RESULTS=$DATA/results.csv
+[ "${NO_PEERS:-0}" = 1 ] && [ "${PEERS_THIS_RUN:-0}" != 1 ] && PEER_RESULTS=none
+python3 - "$DATA" "$PEER_RESULTS" <<'PY'
 import csv, os, re, statistics, sys
-data = sys.argv[1]
+data, peer_results = sys.argv[1], sys.argv[2]
 ours = {}
 for line in open(f"{data}/trapdem_mpi_medians.txt"):
     m = re.match(r'trapdem N=(\d+) ranks=(\d+) threads=(\d+) Mpsteps/s=([0-9.eE+-]+)', line)
     if m: ours[(int(m.group(1)), m.group(2), m.group(3))] = float(m.group(4))
 peer = {}
-if os.path.exists(f"{data}/results.csv"):
-    rows = [r for r in csv.DictReader(open(f"{data}/results.csv")) if r['np'] == '2']
+if os.path.exists(peer_results):  # a stale file from another run is not compared ("none")
+    rows = [r for r in csv.DictReader(open(peer_results)) if r['np'] == '2']
     for key in {(r['code'], r['N_box_W']) for r in rows}:
         g = [r for r in rows if (r['code'], r['N_box_W']) == key]
         n = int(re.search(r'(\d+) atoms', open(f"{data}/pack_W{key[1]}.data").read()).group(1))
