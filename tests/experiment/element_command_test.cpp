@@ -17,18 +17,12 @@
 #include "core/json.hpp"
 #include "element_command.hpp"
 #include "element_test_config.hpp"
+#include "io/text_file.hpp"
 
 namespace fs = std::filesystem;
 
 namespace trapdem {
 namespace {
-
-std::string read_text(const fs::path& p) {
-  std::ifstream in(p);
-  std::stringstream s;
-  s << in.rdbuf();
-  return s.str();
-}
 
 // A scratch folder of this test program's own (ctest runs programs of several work trees at once).
 fs::path scratch(const std::string& name) {
@@ -58,7 +52,7 @@ struct Csv {
 
 Csv read_csv(const fs::path& file) {
   Csv csv;
-  std::istringstream in(read_text(file));
+  std::istringstream in(read_text_file(file));
   std::string line;
   bool first = true;
   while (std::getline(in, line)) {
@@ -96,12 +90,12 @@ TEST(ElementCommand, WritesTheCsvTheJsonAndTheFigureOfBothSpecimens) {
     EXPECT_TRUE(fs::exists(dir / "out" / name)) << name;
   // A PNG, and not a blank one: its compressed size grows with what is drawn (an empty canvas of
   // this size compresses to a few kB).
-  const std::string png = read_text(dir / "out" / "element.png");
+  const std::string png = read_text_file(dir / "out" / "element.png");
   ASSERT_GT(png.size(), 8u);
   EXPECT_EQ(png.substr(1, 3), "PNG");
   EXPECT_GT(png.size(), 10000u);
   // The option went through the configuration: resolved.toml records it.
-  EXPECT_NE(read_text(dir / "out" / "resolved.toml").find("confining = [40000"), std::string::npos);
+  EXPECT_NE(read_text_file(dir / "out" / "resolved.toml").find("confining = [40000"), std::string::npos);
 
   const Csv csv = read_csv(dir / "out" / "element.csv");
   const std::size_t packing = csv.column("packing"), confining = csv.column("confining_Pa"),
@@ -129,7 +123,7 @@ TEST(ElementCommand, WritesTheCsvTheJsonAndTheFigureOfBothSpecimens) {
   EXPECT_LE(dense, 9);
   EXPECT_EQ(dense, loose);
 
-  const Json json = Json::parse(read_text(dir / "out" / "element.json"), "element.json");
+  const Json json = Json::parse(read_text_file(dir / "out" / "element.json"), "element.json");
   EXPECT_EQ(json["configuration"].as_string(), "element-command");
   EXPECT_EQ(json["test"].as_string(), "biaxial");
   EXPECT_EQ(json["particles"].as_number(), 100.0);
