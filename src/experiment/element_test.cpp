@@ -60,7 +60,8 @@ void equilibrate(ElementSpecimen& sp, const ElementSetup& setup, double max_spee
                  const ElementLog& log) {
   Simulation& sim = *sp.sim;
   StressServo servo[3];
-  for (auto& s : servo) s = StressServo(sp.confining, max_speed);
+  const double response = wall_contact_response(sim, sp.box);
+  for (auto& s : servo) s = StressServo(sp.confining, max_speed, response);
   const double rest_velocity =
       kRestFraction * shear_strain_rate(setup, sp.confining) * setup.material.sizes.mean_diameter();
   std::int64_t steps = 0;
@@ -196,7 +197,9 @@ SpecimenResult shear_specimen(ElementSpecimen& sp, const ElementSetup& setup, co
   // The lateral walls may move at up to twice the axial rate each (a lateral strain rate of four
   // times the axial one: far above the steepest dilation).
   const double lateral_cap = 2.0 * r.strain_rate * sp.box.length(sim, 0);
-  StressServo servo[2] = {StressServo(sp.confining, lateral_cap), StressServo(sp.confining, lateral_cap)};
+  const double response = wall_contact_response(sim, sp.box);
+  StressServo servo[2] = {StressServo(sp.confining, lateral_cap, response),
+                          StressServo(sp.confining, lateral_cap, response)};
   if (biaxial) {  // plane strain: the y walls stay where the isotropic stage left them
     sim.set_wall_velocity(sp.box.wall[1][0], Vec3{});
     sim.set_wall_velocity(sp.box.wall[1][1], Vec3{});
