@@ -23,8 +23,7 @@ using namespace trapdem;
 namespace {
 
 // The tiny pair of study_run_test.cpp (a shallow pour, 3 mm of travel), twice each, with
-// restitution 0.9: the element test's dense specimen does not come to rest with tiny's 0.5 within
-// its step limit (docs/study.md). The element test is shrunk to 200 spheres sheared to 5 %
+// restitution 0.9 (see tests/study/tiny_study.hpp). The element test is shrunk to 200 spheres sheared to 5 %
 // (about ten seconds a case on one thread) at tiny's mid-depth stress, ~10 kPa.
 const std::string kStudy = "name = \"tiny-seeds\"\ndescription = \"Two tiny cases, two packing seeds each\"\nreplicates = 2\n" +
                            test::tiny_scale("the tiny preset, a shallow pour and 3 mm of travel") +

@@ -24,8 +24,9 @@ inline const std::string three_mm_of_travel =
     "trapdoor.travel = 0.003\n"
     "output.snapshot_displacements = [0.0, 0.001, 0.002, 0.003]\n";
 
-// Keys for [report]: the element test of every case, shrunk (tiny's restitution of 0.5 leaves the
-// dense specimen moving at its step limit: the studies that use it set contact.restitution = 0.9).
+// Keys for [report]: the element test of every case, shrunk. (The studies that use it set
+// contact.restitution = 0.9, from when tiny's 0.5 left the dense specimen moving at its step limit;
+// the servo settles it since its gain includes the dashpot: tests/experiment/element_command_test.cpp.)
 inline const std::string small_element_test =
     "element_test = true\n"
     "[report.element]\n"
