@@ -5,6 +5,7 @@
 #include <fmt/format.h>
 
 #include "core/errors.hpp"
+#include "plot/figure_format.hpp"
 #include "study/slurm_script.hpp"
 #include "study/slurm_submission.hpp"
 #include "study/study_runner.hpp"
@@ -25,6 +26,7 @@ std::vector<std::string> calibrate_arguments(const CalibrateOptions& o, const fs
   args.insert(args.end(), {"--target", fs::absolute(o.target).lexically_normal().string(), "--at", o.at, "--out",
                            fs::absolute(out).lexically_normal().string(), "--grid", o.grid});
   if (!o.piv_trapdoor.empty()) args.insert(args.end(), {"--piv-trapdoor", o.piv_trapdoor});
+  if (plot::parse_figure_format(o.format) != plot::FigureFormat::png) args.insert(args.end(), {"--format", o.format});
   return args;
 }
 
@@ -83,8 +85,9 @@ int run_calibrate(const CalibrateCommand& command) {
     fmt::print("{}{:>10.3f}  {:>10.3f}  {:>7.0f}%\n", line, 100.0 * c.ranked[r].error, 100.0 * c.ranked[r].bias,
                100.0 * c.ranked[r].coverage);
   }
-  fmt::print("written in {}: calibration.csv, best.toml (run it with `trapdem run {}`), error_surface.png, "
-             "compare_best.png, report/index.html\n", c.out.string(), (c.out / "best.toml").string());
+  const std::string ext = plot::extension_of(plot::parse_figure_format(o.format));
+  fmt::print("written in {}: calibration.csv, best.toml (run it with `trapdem run {}`), error_surface{}, "
+             "compare_best{}, report/index.html\n", c.out.string(), (c.out / "best.toml").string(), ext, ext);
   return 0;
 }
 

@@ -193,6 +193,7 @@ int main(int argc, char** argv) {
   study_cmd->add_flag("--report-only", study.report_only, "Run nothing: report on the finished cases");
   study_cmd->add_flag("--collect", study.collect, "No trapdoor run: the element tests still missing, then the report (a Slurm submission's report job)");
   study_cmd->add_flag("--status", study.status, "Run nothing: where each run stands (not started, running, finished, failed)");
+  study_cmd->add_option("--format", study.format, "Figure format of the report and the runs' analyses: png (default), svg or pdf")->check(CLI::IsMember({"png", "svg", "pdf"}, CLI::ignore_case));
   trapdem::app::add_submit_options(*study_cmd, study.submit);
 
   trapdem::app::CalibrateCommand calibrate_command;
@@ -210,6 +211,7 @@ int main(int argc, char** argv) {
   cal->add_flag("--quiet", calibrate.quiet, "Runs' progress lines only in their run.log");
   cal->add_flag("--collect", calibrate.collect, "Run nothing: rank the grid once every case has finished (a Slurm submission's report job)");
   cal->add_flag("--status", calibrate_command.status, "Run nothing: where each case stands");
+  cal->add_option("--format", calibrate.format, "Figure format: png (default), svg or pdf")->check(CLI::IsMember({"png", "svg", "pdf"}, CLI::ignore_case));
   trapdem::app::add_submit_options(*cal, calibrate_command.submit);
 
   trapdem::app::ElementOptions element;

@@ -8,6 +8,7 @@
 #include "core/errors.hpp"
 #include "core/json.hpp"
 #include "io/text_file.hpp"
+#include "plot/figure_format.hpp"
 #include "run_command.hpp"
 #include "study/slurm_script.hpp"
 #include "study/slurm_submission.hpp"
@@ -60,6 +61,7 @@ int run_study(const StudyOptions& o) {
   const fs::path out = o.out.empty() ? fs::path("trapdem-out") / (study.name + "-" + scale.name) : fs::path(o.out);
   const int modes = int(o.report_only) + int(o.collect) + int(o.status) + int(!o.submit.submit.empty());
   if (modes > 1) throw InputError("give one of --report-only, --collect, --status and --submit");
+  const plot::FigureFormat format = plot::parse_figure_format(o.format, "--format");
   const std::vector<std::string> where = {"--out", fs::absolute(out).lexically_normal().string(), "--scale", scale.name};
   std::vector<std::string> status_command = {"trapdem", "study", fs::absolute(o.file).lexically_normal().string()};
   status_command.insert(status_command.end(), where.begin(), where.end());
@@ -79,6 +81,7 @@ int run_study(const StudyOptions& o) {
     jobs.report_arguments.insert(jobs.report_arguments.end(), where.begin(), where.end());
     jobs.report_arguments.push_back("--collect");
     jobs.report_arguments.push_back("--quiet");
+    if (format != plot::FigureFormat::png) jobs.report_arguments.insert(jobs.report_arguments.end(), {"--format", o.format});
     jobs.comment = {fmt::format("Study '{}' at scale '{}': written by `trapdem study ... --submit slurm`.", study.name,
                                 scale.name),
                     "Submitted again by that command, it skips the finished runs and resumes the others; by hand:",
@@ -108,7 +111,7 @@ int run_study(const StudyOptions& o) {
   } else if (!run_study_in_folder(study, scale, out, StudyRunSettings{preset_directory(), o.threads, o.quiet})) {
     return 130;
   }
-  const fs::path page = write_study_outputs(study, scale, out, o.quiet, preset_directory());
+  const fs::path page = write_study_outputs(study, scale, out, o.quiet, preset_directory(), format);
   log_study_line(out, fmt::format("report: {}", page.string()), o.quiet);
   if (!o.quiet) {
     const Json summary = Json::parse(read_text_file(page.parent_path() / "summary.json"));

@@ -33,6 +33,7 @@ struct StudyOptions {
   bool report_only = false;   // no running: report on the cases that finished
   bool collect = false;       // no trapdoor run: the element tests still missing, then the report (Slurm's report job)
   bool status = false;        // no running: where each run stands
+  std::string format = "png"; // the report's and the runs' analysis figures: png | svg | pdf
   SubmitOptions submit;
 };
 

@@ -137,7 +137,7 @@ double read_fill_height(Config& pour, const BoxConfig& box) {
 void read_packing_keys(Config& c, PackingConfig& p) {
   if (!c.has("packing")) return;
   Config t = c.get_table("packing");
-  p.from = t.require_string("from");
+  p.from = t.require_path("from");  // relative: from the configuration file's folder (--set: the working folder)
   if (t.has("from") && p.from.empty()) t.fail("from", "the path of a packing file, or of a trapdem run folder");
   const std::vector<std::string> formats = {"lammps-data", "lammps-dump", "trapdem"};
   if (t.has("format")) p.format = t.get_choice("format", "lammps-data", formats);

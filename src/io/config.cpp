@@ -4,6 +4,7 @@
 #include <cerrno>
 #include <cstring>
 #include <cmath>
+#include <filesystem>
 #include <fstream>
 #include <limits>
 #include <map>
@@ -20,6 +21,7 @@ namespace trapdem {
 
 struct Config::State {
   std::string source;                                   // file name for messages
+  std::filesystem::path folder;                         // the file's folder, absolute (empty: parsed from text)
   toml::table document;
   std::map<std::string, std::string> override_origin;   // full key -> "--set key=value"
   std::set<std::string> used;                           // full keys asked for (tables included)
@@ -91,7 +93,7 @@ std::string format_value(const toml::node& node) {
   if (auto v = node.as_floating_point()) return format_double(v->get());
   if (auto v = node.as_integer()) return std::to_string(v->get());
   if (auto v = node.as_boolean()) return v->get() ? "true" : "false";
-  if (auto v = node.as_string()) return quoted(v->get());
+  if (auto v = node.as_string()) return trapdem::quoted(v->get());
   if (auto a = node.as_array()) {
     std::string out = "[";
     for (std::size_t i = 0; i < a->size(); ++i) out += (i ? ", " : "") + format_value(*a->get(i));
@@ -299,7 +301,9 @@ Config Config::load_file(const std::string& path) {
   if (!in) throw InputError(fmt::format("cannot read the configuration file {}: {}", path, std::strerror(errno)));
   std::ostringstream text;
   text << in.rdbuf();
-  return parse(text.str(), path);
+  Config c = parse(text.str(), path);
+  c.state_->folder = std::filesystem::absolute(path).parent_path();
+  return c;
 }
 
 Config Config::parse(std::string_view text, std::string source_name) {
@@ -530,7 +534,7 @@ std::string Config::get_choice(std::string_view key, std::string_view default_va
                                const std::vector<std::string>& choices) {
   const std::string k = full_key(key);
   std::string listed;
-  for (const std::string& c : choices) listed += (listed.empty() ? "" : ", ") + quoted(c);
+  for (const std::string& c : choices) listed += (listed.empty() ? "" : ", ") + trapdem::quoted(c);
   const std::string expected = "one of " + listed;
   state_->used.insert(k);  // even if the value is then refused: it is a known key
   const std::string x = guarded(*state_, [&] {
@@ -597,6 +601,22 @@ std::string Config::require_string(std::string_view key) {
     if (!has(key)) missing(*state_, full_key(key), "a string");
     return get_string(key, "");
   }, std::string());
+}
+
+std::string Config::require_path(std::string_view key) {
+  const std::string text = require_string(key);
+  if (text.empty() || std::filesystem::path(text).is_absolute()) return text;
+  const std::string k = full_key(key);
+  // Overridden: the key itself or a table above it set by an override (location() reads it alike).
+  bool overridden = false;
+  const std::vector<std::string> parts = split_key(k);
+  for (std::size_t n = parts.size(); n > 0 && !overridden; --n)
+    overridden = state_->override_origin.count(join_key(parts, n)) > 0;
+  const std::filesystem::path base =
+      overridden || state_->folder.empty() ? std::filesystem::current_path() : state_->folder;
+  const std::string absolute = (base / text).lexically_normal().string();
+  record(*state_, k, toml::value<std::string>(absolute), {});
+  return absolute;
 }
 
 template <class T>

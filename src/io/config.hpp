@@ -75,6 +75,12 @@ class Config {
   std::int64_t require_int(std::string_view key, Range range = {});
   bool require_bool(std::string_view key);
   std::string require_string(std::string_view key);
+  // A required path (a file or folder the configuration names, e.g. packing.from), returned
+  // absolute. A relative path written in a configuration file is taken from that file's folder (as
+  // an #include is), so the file works from any working folder; one given by an override (--set)
+  // or in a document parsed from text is taken from the working folder. The resolved output records
+  // the absolute path, so that a resolved.toml run again from elsewhere names the same file.
+  std::string require_path(std::string_view key);
   template <class T>
   std::vector<T> require_vector(std::string_view key, std::string_view unit = {}, Range range = {});
 

@@ -55,7 +55,9 @@ void write_error_surface(const std::filesystem::path& path, const ErrorSurface& 
   // Cells share kFigureWidth less the margins (at least 3.5 numbers wide each).
   const double left = 6.0 * kFontSmall, bottom = 4.2 * kFontSmall, right = 7.0 * kFontSmall;
   const double cell_w = std::max((kFigureWidth - left - right) / nx, 3.5 * kFontSmall);
-  const double cell_h = std::clamp(300.0 / ny, 2.2 * kFontSmall, 80.0);
+  // Tall enough for the y key written along the grid (it ran into the title above a two-row grid).
+  const TextStyle y_title{.size = kFontLabel, .angle_deg = 90.0, .h = HAlign::centre, .v = VAlign::top};
+  const double cell_h = std::max(std::clamp(300.0 / ny, 2.2 * kFontSmall, 80.0), (text_width(s.y_key, y_title) + 20.0) / ny);
   const int width = static_cast<int>(std::ceil(left + nx * cell_w + right));
   const double top = 10.0 + title_height(s.title, s.subtitle, kFontTitle, width - 20.0) + 8.0;
   const int height = static_cast<int>(std::ceil(top + ny * cell_h + bottom));
@@ -93,8 +95,7 @@ void write_error_surface(const std::filesystem::path& path, const ErrorSurface& 
               TextStyle{.size = kFontSmall, .h = HAlign::right, .v = VAlign::middle});
   draw_text(cr, s.x_key, left + 0.5 * nx * cell_w, top + ny * cell_h + 1.8 * kFontSmall,
             TextStyle{.size = kFontLabel, .h = HAlign::centre, .v = VAlign::top});
-  draw_text(cr, s.y_key, 8.0, top + 0.5 * ny * cell_h,
-            TextStyle{.size = kFontLabel, .angle_deg = 90.0, .h = HAlign::centre, .v = VAlign::top});
+  draw_text(cr, s.y_key, 8.0, top + 0.5 * ny * cell_h, y_title);
   ColourBarStyle bar{.label = s.error_label, .font_size = kFontSmall, .max_ticks = 5, .tick_scale = s.error_scale};
   draw_colour_bar(cr, {left + nx * cell_w + 14.0, top, 16.0, ny * cell_h}, map, lo, hi, bar);
   canvas.write(path);

@@ -394,7 +394,18 @@ std::vector<PlotFrame> write_strain_panel(const std::filesystem::path& path,
   }
   const double units_per_mm = (cell_w - left - 8.0) / widest;
   const double plot_h = (z_hi - z_lo) * units_per_mm;
-  const double label_h = 2.6 * font;  // "(a) label" and "δ = ..." above each map
+  // "(a) label" (wrapped to the cell: a long case label ran into the colour bar) and "δ = ..." above
+  // each map.
+  const TextStyle label_style{.size = kFontLabel, .bold = true, .h = HAlign::centre, .v = VAlign::bottom};
+  const double label_line = 1.2 * kFontLabel;
+  std::vector<std::vector<std::string>> label_lines;
+  std::size_t most_lines = 1;
+  for (std::size_t k = 0; k < n; ++k) {
+    const std::string name = k < labels.size() && !labels[k].empty() ? labels[k] : results[k]->geometry.name;
+    label_lines.push_back(wrap_text(fmt::format("({}) {}", static_cast<char>('a' + k % 26), name), label_style, cell_w - 8.0));
+    most_lines = std::max(most_lines, label_lines.back().size());
+  }
+  const double label_h = 2.6 * font + (most_lines - 1) * label_line;
   // The x axis title under the last row only (every panel has the same x scale).
   const double cell_h = label_h + plot_h + bottom - 1.5 * font + 6.0;
   const bool smoothed = shows_smoothed(*results.front(), StrainKind::total);
@@ -417,10 +428,14 @@ std::vector<PlotFrame> write_strain_panel(const std::filesystem::path& path,
     fill_triangles(cr, f, r, [&](std::size_t t) { return map.of(values[t], 0.0, vmax); });
     draw_band_traces(cr, f, r);
     draw_specimen_axes(cr, f, font, k / columns + 1 == rows || k + columns >= n);
-    const std::string name = k < labels.size() && !labels[k].empty() ? labels[k] : r.geometry.name;
     const double centre = f.pixels().x + 0.5 * f.pixels().w;
-    draw_text(cr, fmt::format("({}) {}", static_cast<char>('a' + k % 26), name), centre, cell_y + 1.15 * font,
-              TextStyle{.size = kFontLabel, .bold = true, .h = HAlign::centre, .v = VAlign::bottom});
+    // The label centred over the map where it fits, else kept inside the cell.
+    for (std::size_t i = 0; i < label_lines[k].size(); ++i) {
+      const double half = 0.5 * text_width(label_lines[k][i], label_style);
+      const double lo = cell_x + 4.0 + half, hi = cell_x + cell_w - 4.0 - half;
+      const double at = lo <= hi ? std::clamp(centre, lo, hi) : cell_x + 0.5 * cell_w;
+      draw_text(cr, label_lines[k][i], at, cell_y + 1.15 * font + i * label_line, label_style);
+    }
     draw_text(cr, short_displacement_text(r), centre, f.pixels().y - 4.0,
               TextStyle{.size = font, .colour = {0.3, 0.3, 0.3}, .h = HAlign::centre, .v = VAlign::bottom});
     frames.push_back(f);

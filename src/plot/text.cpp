@@ -150,13 +150,38 @@ double draw_title(cairo_t* cr, double x, double y, const std::string& title, con
   return title_block(cr, x, y, title, subtitle, size, max_width, true);
 }
 
-double title_height(const std::string& title, const std::string& subtitle, double size, double max_width) {
+namespace {
+
+// `measure` run on a 1 x 1 scratch surface (text metrics before a canvas exists).
+template <class Measure>
+double measured(Measure&& measure) {
   cairo_surface_t* scratch = cairo_image_surface_create(CAIRO_FORMAT_RGB24, 1, 1);
   cairo_t* cr = cairo_create(scratch);
-  const double h = title_block(cr, 0.0, 0.0, title, subtitle, size, max_width, false);
+  const double x = measure(cr);
   cairo_destroy(cr);
   cairo_surface_destroy(scratch);
-  return h;
+  return x;
+}
+
+}  // namespace
+
+double title_height(const std::string& title, const std::string& subtitle, double size, double max_width) {
+  return measured([&](cairo_t* cr) { return title_block(cr, 0.0, 0.0, title, subtitle, size, max_width, false); });
+}
+
+double text_width(const std::string& text, const TextStyle& style) {
+  TextStyle flat = style;
+  flat.angle_deg = 0.0;
+  return measured([&](cairo_t* cr) { return text_box(cr, text, flat).w; });
+}
+
+std::vector<std::string> wrap_text(const std::string& text, const TextStyle& style, double max_width) {
+  std::vector<std::string> lines;
+  measured([&](cairo_t* cr) {
+    lines = wrap_text(cr, text, style, max_width);
+    return 0.0;
+  });
+  return lines;
 }
 
 }  // namespace trapdem::plot

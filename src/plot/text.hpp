@@ -50,5 +50,8 @@ double draw_title(cairo_t* cr, double x, double y, const std::string& title, con
                   double max_width);
 // The height draw_title takes, measured without drawing (to size a canvas before it exists).
 double title_height(const std::string& title, const std::string& subtitle, double size, double max_width);
+// The width of `text` in `style` (unrotated), and wrap_text, measured without a canvas.
+double text_width(const std::string& text, const TextStyle& style);
+std::vector<std::string> wrap_text(const std::string& text, const TextStyle& style, double max_width);
 
 }  // namespace trapdem::plot

@@ -15,6 +15,7 @@
 #include "plot/error_surface.hpp"
 #include "experiment/run_folder.hpp"
 #include "experiment/run_record.hpp"
+#include "plot/figure_format.hpp"
 #include "study/run_comparison.hpp"
 #include "study/study_definition.hpp"
 #include "study/study_runner.hpp"
@@ -181,6 +182,7 @@ CalibrationGrid calibration_grid(const CalibrateOptions& o) {
 }
 
 Calibration calibrate(const CalibrateOptions& o) {
+  const plot::FigureFormat format = plot::parse_figure_format(o.format, "--format");
   const CalibrationGrid calibration = calibration_grid(o);
   Calibration result;
   result.keys = calibration.keys;
@@ -235,10 +237,12 @@ Calibration calibrate(const CalibrateOptions& o) {
                                    "= {:.3f} %):", study.cases.size(), o.target, o.at, 100.0 * best.error);
   for (std::size_t i = 0; i < result.keys.size(); ++i) header += fmt::format(" {} = {}", result.keys[i].key, best.values[i]);
   write_text_atomically(result.out / "best.toml", header + "\n" + read_text_file(RunFolder(best.run_dir).resolved_toml()));
-  plot::write_error_surface(result.out / "error_surface.png", error_surface(result, grid, error_of_case, o.at));
+  plot::write_error_surface(plot::with_format(result.out / "error_surface", format),
+                            error_surface(result, grid, error_of_case, o.at));
   for (std::size_t k = 0; k < study.cases.size(); ++k)
-    if (study.cases[k].name == best.case_name) write_compare_figure(compared[k], result.out / "compare_best.png");
-  write_study_outputs(study, scale, result.out, true);
+    if (study.cases[k].name == best.case_name)
+      write_compare_figure(compared[k], plot::with_format(result.out / "compare_best", format));
+  write_study_outputs(study, scale, result.out, true, {}, format);
   return result;
 }
 }  // namespace trapdem

@@ -19,6 +19,7 @@ struct CalibrateOptions {
   std::string out;                   // empty: trapdem-out/calibrate-<base name>
   std::string grid = "2mm";          // spacing of the common grid
   std::string piv_trapdoor;          // "X,Z": trapdoor centre in the PIV coordinates (see compare)
+  std::string format = "png";        // the figures (error surface, comparison, report): png | svg | pdf
   int threads = 0;
   bool quiet = false;
   bool collect = false;              // run nothing: rank the finished grid (the Slurm report job, issue 16)
@@ -48,7 +49,8 @@ struct Calibration {
   bool complete = false;               // false: interrupted before every case ran
 };
 
-// Runs, scores and writes calibration.csv, best.toml, error_surface.png and the study report. With
+// Runs, scores and writes calibration.csv, best.toml, error_surface.png (or .svg, .pdf: options.format),
+// compare_best.png and the study report. With
 // options.collect nothing runs: every case must have finished (InputError naming those that have not).
 Calibration calibrate(const CalibrateOptions& options);
 

@@ -6,6 +6,7 @@
 #include <fmt/format.h>
 
 #include "core/errors.hpp"
+#include "core/text_escape.hpp"
 #include "io/config.hpp"
 
 namespace fs = std::filesystem;
@@ -31,6 +32,14 @@ ConfigRecipe read_recipe(Config& document, const std::string& table, const fs::p
     if (!document.is_table(table + ".set"))
       throw document.error(table + ".set", "a table of configuration keys, e.g. [" + table + ".set.contact]");
     recipe.overrides = overrides_from_table(document, table + ".set");
+    // A relative packing.from under `set` names a file beside the study file, as `config` does
+    // (Config::require_path: the study file's folder); the runs get it absolute.
+    const std::string from = table + ".set.packing.from";
+    if (document.has(from)) {
+      const std::string path = document.require_path(from);
+      for (std::string& o : recipe.overrides)
+        if (o.rfind("packing.from=", 0) == 0) o = "packing.from=" + trapdem::quoted(path);
+    }
   }
   return recipe;
 }

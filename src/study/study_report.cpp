@@ -1,6 +1,7 @@
 #include "study/study_report.hpp"
 
 #include <cmath>
+#include <functional>
 
 #include <fmt/format.h>
 
@@ -34,9 +35,33 @@ std::string duration(double s) {
   return fmt::format("{:.1f} h", s / 3600.0);
 }
 
-std::string contour_file(const StudyCaseResult& c) { return "contours_" + c.summary.name + ".png"; }
+// A figure of the report: its file in the report's format, and the image the page shows (the file
+// itself, or a PNG beside a PDF: a browser does not show a PDF as an image).
+struct ReportFigure {
+  std::string file, shown;
+};
 
-void write_ground_reaction_chart(const fs::path& png, const StudyReportInput& in) {
+ReportFigure report_figure(const std::string& stem, plot::FigureFormat format) {
+  const std::string file = stem + plot::extension_of(format);
+  return {file, format == plot::FigureFormat::pdf ? stem + ".png" : file};
+}
+
+// `draw` writes the figure to the path it is given: once in the report's format, once more as the
+// page's PNG where that differs.
+void write_figure(const fs::path& dir, const ReportFigure& f, const std::function<void(const fs::path&)>& draw) {
+  draw(dir / f.file);
+  if (f.shown != f.file) draw(dir / f.shown);
+}
+
+// The image on the page, linked to the figure's file.
+std::string image_html(const ReportFigure& f, const std::string& alt) {
+  return fmt::format("<a href=\"{}\"><img src=\"{}\" alt=\"{}\"></a>", markup_escape(f.file), markup_escape(f.shown),
+                     markup_escape(alt));
+}
+
+std::string contour_stem(const StudyCaseResult& c) { return "contours_" + c.summary.name; }
+
+void write_ground_reaction_chart(const fs::path& path, const StudyReportInput& in) {
   plot::LineChart chart;
   chart.title = "Ground reaction curves";
   bool replicated = false;
@@ -55,13 +80,13 @@ void write_ground_reaction_chart(const fs::path& png, const StudyReportInput& in
     series.y = s.grc_trapdoor_ratio;
     chart.series.push_back(std::move(series));
   }
-  plot::write_line_chart(png, chart);
+  plot::write_line_chart(path, chart);
 }
 
-std::string replicate_chart_file(const StudyCaseResult& c) { return "ground_reaction_" + c.summary.name + ".png"; }
+std::string replicate_chart_stem(const StudyCaseResult& c) { return "ground_reaction_" + c.summary.name; }
 
 // A case's replicates' ground reaction curves (thin) with their mean (thick).
-void write_replicate_chart(const fs::path& png, const StudyCaseResult& c) {
+void write_replicate_chart(const fs::path& path, const StudyCaseResult& c) {
   plot::LineChart chart;
   chart.title = fmt::format("{}: ground reaction curves of {} packing seeds", c.summary.label,
                             c.ensemble.replicates.size());
@@ -86,7 +111,7 @@ void write_replicate_chart(const fs::path& png, const StudyCaseResult& c) {
   mean.x = c.summary.grc_x_over_b;
   mean.y = c.summary.grc_trapdoor_ratio;
   chart.series.push_back(std::move(mean));
-  plot::write_line_chart(png, chart);
+  plot::write_line_chart(path, chart);
 }
 
 // A metric over a case's replicates for the page: "—" (none), the value (one), or the mean ± the
@@ -204,12 +229,19 @@ fs::path write_study_report(const fs::path& dir, const StudyReportInput& in) {
   if (!(vmax > 0.0))
     for (const AnalysisResult* r : finals) vmax = std::max(vmax, plot::auto_strain_scale(*r));
   const bool has_panel = !finals.empty();
-  if (has_panel) plot::write_strain_panel(dir / "strain_panel.png", finals, panel_titles, vmax);
+  const ReportFigure panel = report_figure("strain_panel", in.format);
+  if (has_panel)
+    write_figure(dir, panel, [&](const fs::path& p) { plot::write_strain_panel(p, finals, panel_titles, vmax); });
   for (const StudyCaseResult& c : in.cases)
-    if (c.contour_analysis) plot::write_displacement_contours(dir / contour_file(c), *c.contour_analysis);
-  write_ground_reaction_chart(dir / "ground_reaction.png", in);
+    if (c.contour_analysis)
+      write_figure(dir, report_figure(contour_stem(c), in.format),
+                   [&](const fs::path& p) { plot::write_displacement_contours(p, *c.contour_analysis); });
+  const ReportFigure ground_reaction = report_figure("ground_reaction", in.format);
+  write_figure(dir, ground_reaction, [&](const fs::path& p) { write_ground_reaction_chart(p, in); });
   for (const StudyCaseResult& c : in.cases)
-    if (c.ensemble.replicates.size() > 1) write_replicate_chart(dir / replicate_chart_file(c), c);
+    if (c.ensemble.replicates.size() > 1)
+      write_figure(dir, report_figure(replicate_chart_stem(c), in.format),
+                   [&](const fs::path& p) { write_replicate_chart(p, c); });
 
   std::vector<CaseSummary> summaries;
   std::vector<CaseEnsemble> ensembles;
@@ -279,10 +311,10 @@ fs::path write_study_report(const fs::path& dir, const StudyReportInput& in) {
 
   h += "<h2>Maximum shear strain at the final displacement</h2>\n";
   if (has_panel) {
-    h += fmt::format("<figure><a href=\"strain_panel.png\"><img src=\"strain_panel.png\" alt=\"Panel of maximum shear "
-                     "strain maps, one per case\"></a><figcaption>Total maximum shear strain γ<sub>max</sub> (White &amp; "
+    h += fmt::format("<figure>{}<figcaption>Total maximum shear strain γ<sub>max</sub> (White &amp; "
                      "Bolton 2004) from the start of lowering, particles near the front window; one colour scale, 0 to "
-                     "{:g} (the paper's Figure 7).</figcaption></figure>\n", vmax);
+                     "{:g} (the paper's Figure 7).</figcaption></figure>\n",
+                     image_html(panel, "Panel of maximum shear strain maps, one per case"), vmax);
   } else {
     h += "<p class=\"note\">No case could be analysed.</p>\n";
   }
@@ -290,23 +322,25 @@ fs::path write_study_report(const fs::path& dir, const StudyReportInput& in) {
   h += fmt::format("<h2>Vertical displacement at δ = {}</h2>\n<div class=\"grid\">\n", markup_escape(contours_at));
   for (const StudyCaseResult& c : in.cases) {
     if (c.contour_analysis) {
-      h += fmt::format("<figure><img src=\"{}\" alt=\"Vertical displacement contours of {}\"><figcaption>{}</figcaption>"
-                       "</figure>\n", markup_escape(contour_file(c)), markup_escape(c.summary.label), markup_escape(c.summary.label));
+      h += fmt::format("<figure>{}<figcaption>{}</figcaption></figure>\n",
+                       image_html(report_figure(contour_stem(c), in.format),
+                                  "Vertical displacement contours of " + c.summary.label),
+                       markup_escape(c.summary.label));
     } else {
       h += fmt::format("<p class=\"note\">{}: {}</p>\n", markup_escape(c.summary.label), markup_escape(c.missing_note));
     }
   }
   h += "</div>\n";
 
-  h += "<h2>Ground reaction curves</h2>\n<figure class=\"chart\"><img src=\"ground_reaction.png\" alt=\"Trapdoor "
-       "stress against displacement, one curve per case\"><figcaption>The trapdoor's stress over its value before "
-       "lowering (1: the dotted line) against its displacement over its width; the fall is the arching.</figcaption>"
-       "</figure>\n";
+  h += fmt::format("<h2>Ground reaction curves</h2>\n<figure class=\"chart\">{}<figcaption>The trapdoor's stress over "
+                   "its value before lowering (1: the dotted line) against its displacement over its width; the fall is "
+                   "the arching.</figcaption></figure>\n",
+                   image_html(ground_reaction, "Trapdoor stress against displacement, one curve per case"));
   for (const StudyCaseResult& c : in.cases) {
     if (c.ensemble.replicates.size() < 2) continue;
-    h += fmt::format("<figure class=\"chart\"><img src=\"{}\" alt=\"Ground reaction curves of the seeds of {}\">"
-                     "<figcaption>{}: each packing seed and their mean.</figcaption></figure>\n",
-                     markup_escape(replicate_chart_file(c)), markup_escape(c.summary.label),
+    h += fmt::format("<figure class=\"chart\">{}<figcaption>{}: each packing seed and their mean.</figcaption></figure>\n",
+                     image_html(report_figure(replicate_chart_stem(c), in.format),
+                                "Ground reaction curves of the seeds of " + c.summary.label),
                      markup_escape(c.summary.label));
   }
 

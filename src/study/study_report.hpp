@@ -10,6 +10,7 @@
 #include <vector>
 
 #include "analysis/analysis_run.hpp"
+#include "plot/figure_format.hpp"
 #include "study/case_summary.hpp"
 #include "study/replicate_statistics.hpp"
 #include "study/study_definition.hpp"
@@ -44,6 +45,10 @@ struct StudyReportInput {
   std::string scale, scale_description;
   StudyReportSettings settings;
   std::vector<StudyCaseResult> cases;
+  // The figures' format (`trapdem study --format`). The page shows PNG and SVG figures as they are;
+  // a browser does not show a PDF as an image, so with PDF each figure is also written as a PNG
+  // for the page, which links every image to its figure file.
+  plot::FigureFormat format = plot::FigureFormat::png;
 };
 
 // The report's files for scripts: one row per run (case, label, seed, every metric), and the

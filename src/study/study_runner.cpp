@@ -234,7 +234,7 @@ namespace {
 // `finals` and `contours` for the report's figures. A run that cannot be analysed (too few
 // particles in view, say) gets a note and does not hide the others.
 StudyRunResult summarise_run(const StudyDefinition& study, const StudyCase& c, const CaseRun& run, bool quiet,
-                             std::vector<std::unique_ptr<AnalysisResult>>& finals,
+                             plot::FigureFormat format, std::vector<std::unique_ptr<AnalysisResult>>& finals,
                              std::vector<std::unique_ptr<AnalysisResult>>& contours) {
   const RunFolder folder(run.dir);
   StudyRunResult r;
@@ -251,6 +251,7 @@ StudyRunResult summarise_run(const StudyDefinition& study, const StudyCase& c, c
   AnalyzeOptions a;
   a.dir = run.dir.string();
   a.quiet = true;
+  a.format = plot::extension_of(format).substr(1);
   try {
     finals.push_back(std::make_unique<AnalysisResult>(analyze_and_write(a)));
   } catch (const InputError& e) {
@@ -287,13 +288,14 @@ StudyRunResult summarise_run(const StudyDefinition& study, const StudyCase& c, c
 }  // namespace
 
 fs::path write_study_outputs(const StudyDefinition& study, const StudyScale& scale, const fs::path& out, bool quiet,
-                             const fs::path& preset_directory) {
+                             const fs::path& preset_directory, plot::FigureFormat format) {
   StudyReportInput input;
   input.study_name = study.name;
   input.description = study.description;
   input.scale = scale.name;
   input.scale_description = scale.description;
   input.settings = study.report;
+  input.format = format;
   // Results live here so that the report can point at them.
   std::vector<std::unique_ptr<AnalysisResult>> finals, contours;
   for (const StudyCase& c : study.cases) {
@@ -301,7 +303,7 @@ fs::path write_study_outputs(const StudyDefinition& study, const StudyScale& sca
     r.run_dir = case_directory(out, c);
     std::vector<CaseSummary> analysed;
     for (const CaseRun& run : case_runs(study, c, scale, out, preset_directory)) {
-      r.runs.push_back(summarise_run(study, c, run, quiet, finals, contours));
+      r.runs.push_back(summarise_run(study, c, run, quiet, format, finals, contours));
       const StudyRunResult& last = r.runs.back();
       if (!last.analysed) continue;
       analysed.push_back(last.summary);

@@ -8,6 +8,7 @@
 #include <string>
 #include <vector>
 
+#include "plot/figure_format.hpp"
 #include "study/study_definition.hpp"
 
 namespace trapdem {
@@ -72,10 +73,12 @@ bool holds_study(const std::filesystem::path& out);
 bool run_study_in_folder(const StudyDefinition& study, const StudyScale& scale, const std::filesystem::path& out,
                          const StudyRunSettings& settings);
 
-// Analyses every finished run and writes out/report/. Returns the page's path.
+// Analyses every finished run and writes out/report/, the runs' analysis figures and the report's
+// in `format`. Returns the page's path.
 std::filesystem::path write_study_outputs(const StudyDefinition& study, const StudyScale& scale,
                                           const std::filesystem::path& out, bool quiet,
-                                          const std::filesystem::path& preset_directory = {});
+                                          const std::filesystem::path& preset_directory = {},
+                                          plot::FigureFormat format = plot::FigureFormat::png);
 
 // Appends a line to out/study.log (time-stamped) and prints it unless quiet.
 void log_study_line(const std::filesystem::path& out, const std::string& line, bool quiet);

@@ -349,3 +349,56 @@ TEST(PackingStart, DumpDensityColumn) {
   EXPECT_EQ(c.packing.particles->id, (std::vector<std::int64_t>{4, 9}));
   fs::remove_all(dir);
 }
+
+namespace {
+
+// While alive, the process works in `folder` (then in the folder it was in before).
+class WorkingFolder {
+ public:
+  explicit WorkingFolder(const fs::path& folder) : before_(fs::current_path()) { fs::current_path(folder); }
+  ~WorkingFolder() { fs::current_path(before_); }
+  WorkingFolder(const WorkingFolder&) = delete;
+  WorkingFolder& operator=(const WorkingFolder&) = delete;
+
+ private:
+  fs::path before_;
+};
+
+}  // namespace
+
+// A relative packing.from in a configuration file names a file beside that file (as an #include),
+// whatever the working folder; given with --set it names one in the working folder. The working
+// folder holds another packing of the same name, so that taking the wrong folder shows in the
+// particle count. The resolved configuration names the file absolute: read again from elsewhere
+// (as a resume reads the run folder's resolved.toml) it is the same file.
+TEST(PackingStart, RelativeFromIsTheConfigurationFilesFolder) {
+  const fs::path dir = fresh_dir("relative");
+  for (const char* sub : {"configs", "work", "run"}) fs::create_directories(dir / sub);
+  const Particles beside = lattice(2), in_work = lattice(1);
+  write_dump(dir / "configs" / "bed.dump", beside, false);
+  write_dump(dir / "work" / "bed.dump", in_work, false);
+  std::ofstream(dir / "configs" / "run.toml") << read_text_file(kTiny)
+                                               << "\n[packing]\nfrom = \"bed.dump\"\nformat = \"lammps-dump\"\n";
+  const std::string absolute = (dir / "configs" / "bed.dump").lexically_normal().string();
+  std::string resolved;
+  {
+    const WorkingFolder work(dir / "work");
+    Config file = Config::load_file("../configs/run.toml");
+    const ExperimentConfig c = ExperimentConfig::from(file);
+    EXPECT_EQ(c.packing.from, absolute);
+    EXPECT_EQ(c.packing.particles->size(), beside.size());
+    resolved = file.resolved_toml();
+    EXPECT_NE(resolved.find("from = \"" + absolute + "\""), std::string::npos) << resolved;
+
+    Config set = Config::load_file("../configs/run.toml");
+    set.apply_override("packing.from=\"bed.dump\"");
+    const ExperimentConfig s = ExperimentConfig::from(set);
+    EXPECT_EQ(s.packing.from, (dir / "work" / "bed.dump").lexically_normal().string());
+    EXPECT_EQ(s.packing.particles->size(), in_work.size());
+  }
+  std::ofstream(dir / "run" / "resolved.toml") << resolved;
+  const WorkingFolder elsewhere(dir);
+  Config again = Config::load_file((dir / "run" / "resolved.toml").string());
+  EXPECT_EQ(ExperimentConfig::from(again).packing.particles->size(), beside.size());
+  fs::remove_all(dir);
+}

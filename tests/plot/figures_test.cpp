@@ -12,6 +12,7 @@
 #include <fmt/format.h>
 
 #include "../analysis/synthetic_points.hpp"
+#include "../io/io_test_support.hpp"
 #include "png_image.hpp"
 #include "analysis/analysis_run.hpp"
 #include "core/errors.hpp"
@@ -66,18 +67,15 @@ AnalysisResult synthetic_result(const std::string& name) {
   return analyze_frames({lattice_frame(0.0, w), lattice_frame(0.003, w), lattice_frame(0.006, w)}, g, s);
 }
 
-// An empty folder under the temporary directory.
-fs::path scratch_dir(const std::string& name) {
-  const fs::path dir = fs::temp_directory_path() / name;
-  fs::remove_all(dir);
-  fs::create_directories(dir);
-  return dir;
-}
+// Each test writes into a folder of its own (mkdtemp), removed at its end: two runs of the tests at
+// once (two work trees, or ctest -j) never write to the same files.
+using ScratchDir = io_testing::ScratchDir;
 
 }  // namespace
 
 TEST(Figures, SpecimenFiguresAreWrittenAndNotBlank) {
-  const fs::path dir = scratch_dir("trapdem-figures-test");
+  const ScratchDir scratch;
+  const fs::path& dir = scratch.path();
   const AnalysisResult r = synthetic_result("synthetic");
   plot::write_strain_map(dir / "strain.png", r, plot::StrainKind::total, 0.0, 450);
   plot::write_strain_map(dir / "strain_inc.png", r, plot::StrainKind::incremental, 0.0, 450);
@@ -100,7 +98,8 @@ TEST(Figures, SpecimenFiguresAreWrittenAndNotBlank) {
 }
 
 TEST(Figures, LineChartIsWrittenAndNotBlank) {
-  const fs::path path = fs::temp_directory_path() / "trapdem-line-chart.png";
+  const ScratchDir scratch;
+  const fs::path path = scratch / "line-chart.png";
   plot::LineChart chart;
   chart.title = "ground reaction";
   chart.x_label = "δ/B (-)";
@@ -155,7 +154,8 @@ std::string pdf_utf16_hex(const std::string& ascii) {
 }  // namespace
 
 TEST(FigureFormats, TheExtensionPicksPngSvgOrPdf) {
-  const fs::path dir = scratch_dir("trapdem-figure-formats");
+  const ScratchDir scratch;
+  const fs::path& dir = scratch.path();
   const AnalysisResult r = synthetic_result("synthetic");
   for (const char* ext : {".png", ".svg", ".pdf", ".PDF"}) plot::write_strain_map(dir / ("strain" + std::string(ext)), r, plot::StrainKind::total);
   const std::string png = bytes_of(dir / "strain.png"), svg = bytes_of(dir / "strain.svg"), pdf = bytes_of(dir / "strain.pdf");
@@ -185,7 +185,8 @@ TEST(VolumetricStrainMap, CompressionRedDilationBlue) {
   const auto w = [&](Point2 p, double delta) { return (p.x < 0.05 ? -1.0 : 1.0) * e * p.z * delta / 0.003; };
   const AnalysisResult r = analyze_frames({lattice_frame(0.0, w), lattice_frame(0.003, w)},
                                           {"signs", 0.1, 0.01, 0.07, {0.05, 0.03, 0.0}}, {});
-  const fs::path png = fs::temp_directory_path() / "trapdem-volumetric.png";
+  const ScratchDir scratch;
+  const fs::path png = scratch / "volumetric.png";
   const plot::PlotFrame f = plot::write_volumetric_strain_map(png, r);
   const test::PngImage image = test::read_png(png);
   auto pixel = [&](double x_mm, double z_mm) {
@@ -216,13 +217,14 @@ TEST(StrainPanel, PanelsShareOneLengthScale) {
   const AnalysisResult a = synthetic_result("a");
   AnalysisResult b = synthetic_result("b");
   b.geometry.box_width = 0.14;
-  const auto frames = plot::write_strain_panel(fs::temp_directory_path() / "trapdem-panel-scale.svg", {&a, &b},
+  const ScratchDir scratch;
+  const auto frames = plot::write_strain_panel(scratch / "panel-scale.svg", {&a, &b},
                                                {"case A", "case B"});
   ASSERT_EQ(frames.size(), 2u);
   EXPECT_NEAR(frames[0].scale_x(), frames[1].scale_x(), 1e-12);
   EXPECT_NEAR(frames[0].pixels().h, frames[1].pixels().h, 1e-12);
   EXPECT_NEAR(frames[0].y_range().lo, frames[1].y_range().lo, 1e-12);
   EXPECT_NEAR(frames[0].pixels().w * 0.14, frames[1].pixels().w * 0.1, 1e-9);
-  const std::string svg = read_text_file(fs::temp_directory_path() / "trapdem-panel-scale.svg");
+  const std::string svg = read_text_file(scratch / "panel-scale.svg");
   EXPECT_NE(svg.find("one colour and length scale"), std::string::npos);
 }

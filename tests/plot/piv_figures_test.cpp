@@ -9,6 +9,7 @@
 #include <fstream>
 #include <iterator>
 
+#include "../io/io_test_support.hpp"
 #include "plot/photo_figure.hpp"
 #include "plot/piv_figures.hpp"
 #include "png_image.hpp"
@@ -22,8 +23,11 @@ using plot::SubsetMark;
 const plot::PixelToPlot half_mm_per_px{0.5, 0.0, 0.0, 0.0, -0.5, 0.0, 0.0, 0.0, 1.0};
 constexpr int columns = 10, rows = 6, step = 8;
 
+// A folder for one test under a folder of this program's own (mkdtemp: two runs at once, from two
+// work trees or ctest -j, never share files), removed when the program ends.
 fs::path scratch(const std::string& name) {
-  const fs::path dir = fs::temp_directory_path() / ("trapdem-piv-figures-" + name);
+  static const io_testing::ScratchDir root;
+  const fs::path dir = root / name;
   fs::remove_all(dir);
   fs::create_directories(dir);
   return dir;

@@ -116,9 +116,19 @@ TEST(Calibrate, PivOfARenderedTinyRunRanksItsOwnParametersFirst) {
   EXPECT_DOUBLE_EQ(e.material.particle.kinetic_friction, 0.5);
   EXPECT_DOUBLE_EQ(e.material.particle.rolling_friction, 0.3);
 
-  // Started again, nothing runs: every case is finished and the ranking is the same.
+  EXPECT_EQ(read_text_file(c.out / "error_surface.png").substr(0, 8), std::string("\x89PNG\r\n\x1a\n", 8));
+
+  // Started again, nothing runs: every case is finished and the ranking is the same; asked for PDF
+  // figures, the error surface, the comparison and the report's figures are PDF files.
+  o.format = "pdf";
   const Calibration again = calibrate(o);
   EXPECT_EQ(again.ranked[0].case_name, c.ranked[0].case_name);
   EXPECT_DOUBLE_EQ(again.ranked[0].error, c.ranked[0].error);
+  for (const char* f : {"error_surface.pdf", "compare_best.pdf", "report/strain_panel.pdf", "report/ground_reaction.pdf"}) {
+    ASSERT_TRUE(fs::exists(c.out / f)) << f;
+    EXPECT_EQ(read_text_file(c.out / f).substr(0, 5), "%PDF-") << f;
+  }
+  o.format = "eps";
+  EXPECT_THROW(calibrate(o), InputError);
   fs::remove_all(dir);
 }

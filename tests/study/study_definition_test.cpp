@@ -2,10 +2,12 @@
 // mistake reported with the file, line and key.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <filesystem>
 #include <fstream>
 
 #include "core/errors.hpp"
+#include "core/text_escape.hpp"
 #include "io/config.hpp"
 #include "run_command.hpp"
 #include "study/study_definition.hpp"
@@ -151,4 +153,42 @@ TEST(StudyDefinition, ThePaperStudyResolvesAtBothScales) {
                             "contact.rolling_model", "contact.restitution", "box.width", "trapdoor.width"})
       EXPECT_EQ(study_case.require_value_text(key), preset.require_value_text(key)) << presets[k] << " " << key;
   }
+}
+
+// A relative packing.from under a case's `set` names a file beside the study file (as the scale's
+// `config` does), whatever the working folder, which here holds another packing of the same name:
+// the case's runs get the path absolute, and the packing read is the study folder's (3 spheres,
+// not the working folder's 2).
+TEST(StudyDefinition, RelativePackingUnderSetIsTheStudyFilesFolder) {
+  const fs::path dir = fs::temp_directory_path() / ("trapdem-study-packing-" + std::to_string(::getpid()));
+  fs::remove_all(dir);
+  fs::create_directories(dir / "studies");
+  fs::create_directories(dir / "work");
+  auto dump = [](const fs::path& path, int count) {
+    std::ofstream out(path);
+    out << "ITEM: TIMESTEP\n0\nITEM: NUMBER OF ATOMS\n" << count << "\nITEM: ATOMS id x y z radius\n";
+    for (int k = 0; k < count; ++k) out << k + 1 << " " << 0.01 + 0.01 * k << " 0.007 0.0022 0.002\n";
+  };
+  dump(dir / "studies" / "bed.dump", 3);
+  dump(dir / "work" / "bed.dump", 2);
+  std::ofstream(dir / "studies" / "study.toml") << "name = \"from-a-packing\"\n[scales.small]\npreset = \"tiny\"\n"
+                                                   "[cases.packed.set.packing]\nfrom = \"bed.dump\"\n"
+                                                   "format = \"lammps-dump\"\n";
+  const fs::path before = fs::current_path();
+  fs::current_path(dir / "work");
+  const std::string absolute = (dir / "studies" / "bed.dump").lexically_normal().string();
+  try {
+    const StudyDefinition s = load_study("../studies/study.toml");
+    ASSERT_EQ(s.cases.size(), 1u);
+    const std::vector<std::string>& set = s.cases[0].own.overrides;
+    EXPECT_NE(std::find(set.begin(), set.end(), "packing.from=" + trapdem::quoted(absolute)), set.end());
+    const std::string resolved = resolved_case_configuration(s.cases[0], s.scales[0], app::preset_directory());
+    EXPECT_NE(resolved.find("from = \"" + absolute + "\""), std::string::npos) << resolved;
+    EXPECT_NE(resolved.find("packing_particle_count = 3"), std::string::npos) << resolved;
+  } catch (...) {
+    fs::current_path(before);
+    throw;
+  }
+  fs::current_path(before);
+  fs::remove_all(dir);
 }

@@ -220,6 +220,60 @@ TEST_F(StudyRun, PageOpensInHeadlessChromiumWithoutMissingImagesOrConsoleErrors)
   fs::remove(broken);
 }
 
+// --format svg and pdf (a copy of the study, reported again): every figure of the report and of the
+// runs' analyses in that format, told by the file's signature; the page shows the SVGs themselves,
+// and beside each PDF a PNG (a browser shows no PDF as an image), every image linked to its file.
+TEST_F(StudyRun, ReportFiguresInSvgAndPdf) {
+  ASSERT_TRUE(chromium_installed()) << "chromium (Debian package) is needed: scripts/install-deps installs it";
+  for (const std::string format : {"svg", "pdf"}) {
+    const fs::path dir = scratch("format-" + format), out = dir / "out", report = out / "report";
+    fs::copy(StudyRun::out(), out, fs::copy_options::recursive);
+    fs::remove_all(report);
+    for (const char* c : {"smooth", "rough"}) fs::remove_all(out / "cases" / c / "analysis");
+    app::StudyOptions o;
+    o.file = write_study_file(dir).string();
+    o.out = out.string();
+    o.quiet = true;
+    o.report_only = true;
+    o.format = format;
+    ASSERT_EQ(app::run_study(o), 0);
+    const bool pdf = format == "pdf";
+    const std::string signature = pdf ? "%PDF-" : "<?xml";
+    const std::string page = read_text_file(report / "index.html");
+    for (const std::string stem : {"strain_panel", "ground_reaction", "contours_smooth", "contours_rough"}) {
+      const fs::path figure = report / (stem + "." + format);
+      ASSERT_TRUE(fs::exists(figure)) << figure;
+      EXPECT_EQ(read_text_file(figure).substr(0, 5), signature) << figure;
+      if (!pdf) {
+        EXPECT_NE(read_text_file(figure).find("<svg"), std::string::npos) << figure;
+      }
+      EXPECT_EQ(fs::exists(report / (stem + ".png")), pdf) << stem << ".png only beside a PDF";
+      const std::string shown = stem + (pdf ? ".png" : ".svg");
+      EXPECT_NE(page.find("<a href=\"" + stem + "." + format + "\"><img src=\"" + shown + "\""), std::string::npos)
+          << stem;
+    }
+    for (const char* c : {"smooth", "rough"}) {
+      const fs::path analysis = out / "cases" / c / "analysis";
+      for (const std::string stem : {"shear_strain", "vertical_displacement", "ground_reaction"}) {
+        ASSERT_TRUE(fs::exists(analysis / (stem + "." + format))) << analysis << " " << stem;
+        EXPECT_EQ(read_text_file(analysis / (stem + "." + format)).substr(0, 5), signature);
+        EXPECT_FALSE(fs::exists(analysis / (stem + ".png")));
+      }
+    }
+    const BrowserResult shown = open_in_chromium(report / "index.html");
+    EXPECT_EQ(shown.exit_code, 0);
+    EXPECT_EQ(shown.images, 4);
+    EXPECT_EQ(shown.broken_images, "") << format;
+    fs::remove_all(dir);
+  }
+  app::StudyOptions eps;
+  eps.file = (StudyRun::out().parent_path() / "study.toml").string();
+  eps.out = out().string();
+  eps.report_only = true;
+  eps.format = "eps";
+  EXPECT_THROW(app::run_study(eps), InputError);
+}
+
 TEST_F(StudyRun, KilledDuringTheSecondCaseAndStartedAgainGivesTheSameReport) {
   const fs::path dir = scratch("killed");
   const fs::path file = write_study_file(dir), out = dir / "out";
