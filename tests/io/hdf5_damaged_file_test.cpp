@@ -17,6 +17,7 @@
 
 #include "io/checkpoint.hpp"
 #include "io/hdf5_file.hpp"
+#include "io/snapshot.hpp"
 #include "io_test_support.hpp"
 
 using namespace trapdem;
@@ -234,6 +235,29 @@ TEST(Hdf5DamagedFile, CheckpointWithZeroedHeapTailIsRefused) {
   const std::string m = file_error_of([&] { read_checkpoint(path); });
   EXPECT_NE(m.find(path.string() + ": /: attribute 'format': damaged string storage: the global heap collection at "
                                    "byte " + std::to_string(heap) + " holds object 0 of 0 bytes"),
+            std::string::npos)
+      << m;
+}
+
+// The snapshot fuzz target's crash of this session: snapshots.h5 with one byte of its link
+// message changed (the flags, 0x08 -> 0x7e: reserved bits set, so the message does not decode).
+// HDF5 1.10 lists such a group (links as messages in its header) through a table of the counted
+// size and, when a message fails to decode, frees the unfilled entries' garbage pointers
+// (AddressSanitizer: SEGV in free under H5G__link_release_table); Hdf5Group::children decodes
+// them through a name lookup first, which fails cleanly.
+TEST(Hdf5DamagedFile, SnapshotIndexWithDamagedLinkMessageIsRefused) {
+  ScratchDir dir;
+  const auto path = dir / "snapshots.h5";
+  Particles p;
+  p.add(1, {0.001, 0.001, 0.001}, 0.001, 2500.0);
+  append_snapshot(path, make_snapshot(p, 0.0, "pour", 0.0, 0));
+  std::vector<std::uint8_t> bytes = bytes_of(path);
+  // The link message: version 1, flags 0x08 (a link type follows), type 64 (external), a name of 6.
+  const std::size_t link = find(bytes, std::string("\x01\x08\x40\x06" "000000", 10));
+  bytes.at(link + 1) = 0x7e;
+  write_bytes(path, bytes);
+  const std::string m = file_error_of([&] { list_snapshots(path); });
+  EXPECT_NE(m.find(path.string() + ": /snapshots: cannot read the group's links (damaged link messages?)"),
             std::string::npos)
       << m;
 }
