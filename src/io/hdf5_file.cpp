@@ -9,6 +9,8 @@
 
 #include <fmt/format.h>
 
+#include "io/hdf5_global_heap.hpp"
+
 namespace trapdem {
 
 namespace fs = std::filesystem;
@@ -73,8 +75,29 @@ void write_dataset(const Hdf5Group& g, std::string_view name, hid_t file_type, h
   }
 }
 
-// Opens a dataset and checks that it is 1-D (columns == 0) or N x columns.
-Hdf5Handle open_dataset(const Hdf5Group& g, std::string_view name, std::size_t columns, std::size_t& rows) {
+// A dataset's in-memory size may exceed what the file stores for it: type widening (at most 8x,
+// one byte to a double), compression (deflate, HDF5's built-in filter, packs at most 1032:1) or
+// chunks never written (read as fill values). Beyond those, and above 64 MiB, the extent in the
+// file is damaged, and reading it would allocate what the file cannot hold.
+constexpr double kAlwaysReadableBytes = 64.0 * 1024 * 1024;
+
+void check_dataset_memory(const Hdf5Group& g, std::string_view name, hid_t set, double bytes) {
+  if (bytes <= kAlwaysReadableBytes) return;
+  Hdf5Handle creation(H5Dget_create_plist(set));
+  const bool filtered = creation.valid() && H5Pget_nfilters(creation.get()) > 0;
+  const double stored = double(H5Dget_storage_size(set));
+  const double limit = stored * (filtered ? 1032.0 : 8.0);
+  if (bytes > limit)
+    throw FileError(fmt::format("{}: its extent needs {:.3g} bytes in memory, but the file stores {:.3g} bytes for it "
+                                "(expected at most {:.0f} times that{}): damaged dataset",
+                                g.describe(name), bytes, stored, filtered ? 1032.0 : 8.0,
+                                filtered ? ", deflate's ratio" : ""));
+}
+
+// Opens a dataset and checks that it is 1-D (columns == 0) or N x columns, and that N rows of
+// `row_bytes` in memory agree with what the file stores (check_dataset_memory).
+Hdf5Handle open_dataset(const Hdf5Group& g, std::string_view name, std::size_t columns, std::size_t& rows,
+                        std::size_t row_bytes) {
   const std::string key(name);
   if (!g.has(name)) throw FileError(fmt::format("{}: no such dataset", g.describe(name)));
   Hdf5Handle set(H5Dopen2(g.id(), key.c_str(), H5P_DEFAULT));
@@ -92,6 +115,7 @@ Hdf5Handle open_dataset(const Hdf5Group& g, std::string_view name, std::size_t c
                                 columns == 0 ? std::string("a 1-D dataset") : fmt::format("an N x {} dataset", columns),
                                 found));
   }
+  check_dataset_memory(g, name, set.get(), double(dims[0]) * double(row_bytes));
   rows = dims[0];
   return set;
 }
@@ -99,19 +123,25 @@ Hdf5Handle open_dataset(const Hdf5Group& g, std::string_view name, std::size_t c
 template <class T>
 std::vector<T> read_dataset(const Hdf5Group& g, std::string_view name, hid_t memory_type, std::size_t columns) {
   std::size_t rows = 0;
-  Hdf5Handle set = open_dataset(g, name, columns, rows);
+  Hdf5Handle set = open_dataset(g, name, columns, rows, sizeof(T));
   std::vector<T> out(rows);
   if (rows > 0 && H5Dread(set.get(), memory_type, H5S_ALL, H5S_ALL, H5P_DEFAULT, out.data()) < 0)
     fail(g.describe(name), "cannot read the dataset (is its number type convertible?)");
   return out;
 }
 
+// Opens an attribute that must hold exactly one value (a scalar or a one-element array): reading
+// a larger one into a single value would write past it.
 Hdf5Handle open_attribute(const Hdf5Group& g, std::string_view name) {
   const std::string key(name);
   if (!g.has_attribute(name))
     throw FileError(fmt::format("{}: no attribute '{}'", g.describe(), key));
   Hdf5Handle attr(H5Aopen(g.id(), key.c_str(), H5P_DEFAULT));
   if (!attr.valid()) fail(g.describe(), fmt::format("cannot open attribute '{}'", key));
+  Hdf5Handle space(H5Aget_space(attr.get()));
+  const hssize_t points = space.valid() ? H5Sget_simple_extent_npoints(space.get()) : -1;
+  if (points != 1)
+    throw FileError(fmt::format("{}: attribute '{}' holds {} values: expected one", g.describe(), key, points));
   return attr;
 }
 
@@ -125,25 +155,32 @@ Hdf5Handle create_attribute(const Hdf5Group& g, std::string_view name, hid_t typ
   return attr;
 }
 
-// Reads a string of either kind HDF5 stores (variable length, as trapdem and h5py write, or fixed
-// length, as numpy byte strings are).
-std::string read_string_value(hid_t object, hid_t stored_type, bool attribute, const std::string& where) {
+// Reads a one-value string attribute of either kind HDF5 stores (variable length, as trapdem and
+// h5py write, or fixed length, as numpy byte strings are), its storage checked first.
+std::string read_string_attribute(hid_t attr, hid_t stored_type, const std::string& where) {
   if (H5Tget_class(stored_type) != H5T_STRING) throw FileError(where + ": expected a string");
   if (H5Tis_variable_str(stored_type) > 0) {
+    check_global_heap_strings(attr, true, 1, where);
     Hdf5Handle type = string_type();
     char* ptr = nullptr;
-    const herr_t rc = attribute ? H5Aread(object, type.get(), &ptr) : H5Dread(object, type.get(), H5S_ALL, H5S_ALL, H5P_DEFAULT, &ptr);
-    if (rc < 0) fail(where, "cannot read the string");
+    if (H5Aread(attr, type.get(), &ptr) < 0) fail(where, "cannot read the string");
     std::string out = ptr ? ptr : "";
     H5free_memory(ptr);
     return out;
   }
+  // A fixed-length string: its declared size is what HDF5 copies out, so it must be the size the
+  // attribute stores, and no larger than the file.
   const std::size_t size = H5Tget_size(stored_type);
+  Hdf5Handle file(H5Iget_file_id(attr));
+  hsize_t file_size = 0;
+  if (!file.valid() || H5Fget_filesize(file.get(), &file_size) < 0) fail(where, "cannot tell the file's size");
+  if (size == 0 || size > file_size || H5Aget_storage_size(attr) != size)
+    throw FileError(fmt::format("{}: a fixed-length string of {} bytes stored in {} bytes of a file of {} bytes: "
+                                "damaged attribute",
+                                where, size, H5Aget_storage_size(attr), file_size));
   std::string buffer(size, '\0');
   Hdf5Handle type(H5Tcopy(stored_type));
-  const herr_t rc = attribute ? H5Aread(object, type.get(), buffer.data())
-                              : H5Dread(object, type.get(), H5S_ALL, H5S_ALL, H5P_DEFAULT, buffer.data());
-  if (rc < 0) fail(where, "cannot read the string");
+  if (H5Aread(attr, type.get(), buffer.data()) < 0) fail(where, "cannot read the string");
   buffer.resize(std::strlen(buffer.c_str()));  // fixed-length strings are NUL- or space-padded
   while (!buffer.empty() && buffer.back() == ' ') buffer.pop_back();
   return buffer;
@@ -222,6 +259,15 @@ std::vector<std::string> Hdf5Group::children() const {
     static_cast<std::vector<std::string>*>(data)->emplace_back(name);
     return 0;
   };
+  // HDF5 1.10 lists a group whose links are messages in its header (compact storage: groups with
+  // external links, as snapshots.h5's) by copying them into a table of the counted size; a link
+  // message that does not decode ends the copy early, and the release then frees the unfilled
+  // entries' garbage pointers (H5G__compact_build_table / H5G__link_release_table; the snapshot
+  // fuzz target, one byte of a link message's flags changed). A name lookup decodes every link
+  // message first and fails cleanly on a damaged one, so it goes first; the listing then finds
+  // them decoded.
+  if (H5Lexists(id(), "\x7f" "trapdem: no such link", H5P_DEFAULT) < 0)
+    fail(describe(), "cannot read the group's links (damaged link messages?)");
   if (H5Literate(id(), H5_INDEX_NAME, H5_ITER_INC, nullptr, collect, &names) < 0)
     fail(describe(), "cannot list the group");
   return names;
@@ -302,10 +348,12 @@ std::vector<Int3> Hdf5Group::read_int3s(std::string_view name) const {
 
 std::vector<std::string> Hdf5Group::read_strings(std::string_view name) const {
   std::size_t rows = 0;
-  Hdf5Handle set = open_dataset(*this, name, 0, rows);
+  // A row: its stored reference (at most 16 bytes) and the string's pointer.
+  Hdf5Handle set = open_dataset(*this, name, 0, rows, 16 + sizeof(char*));
   Hdf5Handle stored(H5Dget_type(set.get()));
   if (H5Tget_class(stored.get()) != H5T_STRING || H5Tis_variable_str(stored.get()) <= 0)
     throw FileError(fmt::format("{}: expected variable-length strings", describe(name)));
+  check_global_heap_strings(set.get(), false, rows, describe(name));
   Hdf5Handle type = string_type();
   std::vector<char*> pointers(rows, nullptr);
   if (rows > 0 && H5Dread(set.get(), type.get(), H5S_ALL, H5S_ALL, H5P_DEFAULT, pointers.data()) < 0)
@@ -373,7 +421,7 @@ std::int64_t Hdf5Group::int_attribute(std::string_view name) const {
 std::string Hdf5Group::string_attribute(std::string_view name) const {
   Hdf5Handle attr = open_attribute(*this, name);
   Hdf5Handle stored(H5Aget_type(attr.get()));
-  return read_string_value(attr.get(), stored.get(), true, fmt::format("{}: attribute '{}'", describe(), name));
+  return read_string_attribute(attr.get(), stored.get(), fmt::format("{}: attribute '{}'", describe(), name));
 }
 
 std::vector<std::string> Hdf5Group::attribute_names() const {

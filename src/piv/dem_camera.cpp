@@ -5,11 +5,18 @@
 #include <numeric>
 #include <unordered_map>
 
+#include <fmt/format.h>
+
 #include "core/errors.hpp"
 
 namespace trapdem {
 
 namespace {
+
+// The largest view: 134 M px, 1 GiB as one double per pixel (the limit of synth's images, and
+// what --check's PIV holds per image at most), estimated from the scale and the particles'
+// extent before the size becomes an int or memory (--px-per-mm 1000 over a 0.3 m box: 9e10 px).
+constexpr double kMaxViewPixels = 1024.0 * 1024.0 * 1024.0 / sizeof(double);
 
 double largest_diameter(const Snapshot& s) {
   double r = 0.0;
@@ -41,7 +48,8 @@ std::vector<bool> front_layer(const Snapshot& s, const CameraSettings& c) {
 
 CameraView camera_view_for(const std::vector<Snapshot>& snapshots, double box_width_m, double px_per_mm,
                            const CameraSettings& settings) {
-  if (!(px_per_mm > 0.0)) throw InputError("--px-per-mm must be positive");
+  if (!(px_per_mm > 0.0) || !std::isfinite(px_per_mm))
+    throw InputError(fmt::format("--px-per-mm {}: expected a finite number > 0", px_per_mm));
   double zlo = 0.0, zhi = -1e300;
   for (const auto& s : snapshots) {
     const auto in = front_layer(s, settings);
@@ -57,8 +65,15 @@ CameraView camera_view_for(const std::vector<Snapshot>& snapshots, double box_wi
   zlo -= 2.0, zhi += 2.0;
   v.origin_x_mm = 0.0;
   v.origin_z_mm = std::ceil(zhi * px_per_mm) / px_per_mm;
-  v.width = static_cast<int>(std::ceil(box_width_m * 1e3 * px_per_mm)) + 1;
-  v.height = static_cast<int>(std::ceil((v.origin_z_mm - zlo) * px_per_mm)) + 1;
+  const double width_mm = box_width_m * 1e3, height_mm = v.origin_z_mm - zlo;
+  const double width = std::ceil(width_mm * px_per_mm) + 1.0, height = std::ceil(height_mm * px_per_mm) + 1.0;
+  if (!(width * height <= kMaxViewPixels))  // also NaN and inf (particles or a box out of range)
+    throw InputError(fmt::format("--px-per-mm {:g}: the view of {:.4g} x {:.4g} mm would be {:.4g} x {:.4g} px; "
+                                 "expected at most {:.3g} px (1 GiB as doubles): a scale of at most {:.3g} px per mm",
+                                 px_per_mm, width_mm, height_mm, width, height, kMaxViewPixels,
+                                 std::sqrt(kMaxViewPixels / (width_mm * height_mm))));
+  v.width = static_cast<int>(width);
+  v.height = static_cast<int>(height);
   return v;
 }
 

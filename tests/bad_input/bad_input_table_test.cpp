@@ -8,7 +8,7 @@
 // the tiny preset, {RUN} a tiny run stopped after 300 steps (checkpoint.h5, resolved.toml, run.log),
 // {DUMP0} {DUMP1} {DUMPNAN} LAMMPS dumps of a small bed (the last with a nan coordinate), {GEOM} a
 // geometry file for them, {IMG1} {IMG2} two speckle images, {EMPTY} an empty folder, {NOWHERE} a
-// path that does not exist.
+// path that does not exist, {SNAPRUN} a folder holding only a snapshots.h5 of {DUMP0}'s bed.
 #include <gtest/gtest.h>
 #include <sys/wait.h>
 #include <unistd.h>
@@ -25,6 +25,7 @@
 #include <fmt/format.h>
 
 #include "experiment/folder_run.hpp"
+#include "io/snapshot.hpp"
 
 namespace trapdem {
 namespace {
@@ -139,6 +140,10 @@ const std::vector<BadInput>& table() {
       {"SynthBadSize", "synth --out {EMPTY}/s --size abc", nullptr, 2, "--size 'abc': expected WIDTHxHEIGHT"},
       {"SynthOneImage", "synth --out {EMPTY}/s --images 1", nullptr, 2, "at least 2"},
       {"SynthNanMagnitude", "synth --out {EMPTY}/s --size 64x64 --magnitude nan", nullptr, 2, "not finite"},
+      // ---- render: the image size from --px-per-mm
+      {"RenderHugeScale", "render {SNAPRUN} --config {GEOM} --px-per-mm 1e9 --out {EMPTY}/r", nullptr, 105, "'1e9': expected a number > 0 and <= 1000 px per mm"},
+      {"RenderViewTooLarge", "render {SNAPRUN} --config {GEOM} --px-per-mm 1000 --out {EMPTY}/r", nullptr, 2, "--px-per-mm 1000: the view of 80 x"},
+      {"RenderNoSnapshots", "render {RUN}", nullptr, 2, "snapshots.h5: not found (run `trapdem run` first)"},
       // ---- sinkhole
       {"SinkholeInfiniteDiameter", "sinkhole --throat 2 --layer 1e308:89.99", nullptr, 2, "(D_s = inf m); expected a thickness in metres that gives a finite D_s"},
       {"SinkholeAngle90", "sinkhole --throat 2 --layer 12:90", nullptr, 2, "outside [0, 90)"},
@@ -219,6 +224,15 @@ class BadInputTable : public ::testing::TestWithParam<BadInput> {
     std::ofstream(root_ / "geom.toml") << "[box]\nwidth = 0.08\ndepth = 0.014\nheight = 0.045\n[trapdoor]\nwidth = 0.016\n"
                                           "travel = 0.004\n";
     places_["{GEOM}"] = (root_ / "geom.toml").string();
+    // The {DUMP0} bed as a run's only snapshot (for render).
+    {
+      Particles bed;
+      for (int ix = 0; ix < 20; ++ix)
+        for (int iz = 0; iz < 10; ++iz) bed.add(ix * 10 + iz + 1, {0.002 + 0.004 * ix, 0.012, 0.002 + 0.004 * iz}, 0.002, 2500.0);
+      fs::create_directories(root_ / "snaprun");
+      append_snapshot(root_ / "snaprun" / "snapshots.h5", make_snapshot(bed, 0.0, "pour", 0.0, 0));
+      places_["{SNAPRUN}"] = (root_ / "snaprun").string();
+    }
     // A run stopped after 300 steps (of the pour): what a resume needs.
     FolderRunOptions run;
     run.config_file = places_["{TINY}"];

@@ -12,6 +12,7 @@
 #include "analysis/grid_field.hpp"
 #include "analysis/sinkhole.hpp"
 #include "core/errors.hpp"
+#include "piv/dem_camera.hpp"
 #include "piv/speckle_synthesis.hpp"
 
 namespace trapdem {
@@ -60,6 +61,30 @@ TEST(LibraryLimits, SpeckleImagesEstimateTheirMemoryAndRefuseNanNoise) {
   s.noise_std = 1.0;
   EXPECT_NE(refusal([&] { synthesize_speckle_sequence(s, {rigid_shift(std::nan(""), 0.0)}); }).find("not finite"),
             std::string::npos);
+}
+
+// `trapdem render --px-per-mm`: the view's size in pixels is estimated from the scale before it
+// becomes an int (1e9 px per mm over 80 mm overflowed int: undefined behaviour) or an image.
+TEST(LibraryLimits, CameraViewEstimatesItsSizeFirst) {
+  Snapshot s;
+  s.id = {1, 2};
+  s.position = {{0.01, 0.001, 0.005}, {0.07, 0.001, 0.03}};
+  s.velocity = s.angular_velocity = {{0, 0, 0}, {0, 0, 0}};
+  s.radius = {0.001, 0.001};
+  CameraSettings c;
+  c.front_wall_y = 0.002;
+  const CameraView fine = camera_view_for({s}, 0.08, 4.0, c);
+  EXPECT_EQ(fine.width, 321);  // 80 mm at 4 px/mm, both edges
+  const std::string m = refusal([&] { camera_view_for({s}, 0.08, 1e9, c); });
+  EXPECT_NE(m.find("--px-per-mm 1e+09: the view of 80 x 35 mm would be 8e+10 x 3.5e+10 px; expected at most "
+                   "1.34e+08 px (1 GiB as doubles): a scale of at most 219 px per mm"),
+            std::string::npos)
+      << m;
+  EXPECT_NE(refusal([&] { camera_view_for({s}, 0.08, std::numeric_limits<double>::infinity(), c); })
+                .find("--px-per-mm inf: expected a finite number > 0"),
+            std::string::npos);
+  s.position[1].z = std::numeric_limits<double>::infinity();  // a damaged snapshot
+  EXPECT_NE(refusal([&] { camera_view_for({s}, 0.08, 4.0, c); }).find("would be"), std::string::npos);
 }
 
 TEST(LibraryLimits, SinkholeRefusesANonFiniteDiameter) {
