@@ -41,7 +41,7 @@ test-asan: deps
 	  -DTRAPDEM_SANITIZE="address;undefined" \
 	  -DTRAPDEM_BUILD_BENCH=OFF $(LAUNCHER) $(CMAKE_FLAGS) > $(ASAN_BUILD).cmake.log 2>&1 || (cat $(ASAN_BUILD).cmake.log; exit 1)
 	@cmake --build $(ASAN_BUILD) -j $(JOBS)
-	@cd $(ASAN_BUILD) && ctest --output-on-failure -j $(JOBS) -LE slow
+	@cd $(ASAN_BUILD) && LSAN_OPTIONS=suppressions=$(CURDIR)/tests/lsan.supp:print_suppressions=0 ctest --output-on-failure -j $(JOBS) -LE slow
 
 # libFuzzer over every reader of user input (tests/fuzz), FUZZ_SECONDS each, one after another,
 # built with clang and AddressSanitizer + UndefinedBehaviorSanitizer in its own folder. Findings:
