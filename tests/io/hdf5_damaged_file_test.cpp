@@ -45,13 +45,11 @@ std::size_t find(const std::vector<std::uint8_t>& bytes, const std::string& text
   return std::size_t(it - bytes.begin());
 }
 
-std::string file_error_of(const std::function<void()>& action) {
-  try {
-    action();
-  } catch (const FileError& e) {
-    return e.what();
-  }
-  return "no FileError";
+// Rewrites the file at `path` with `change` applied to its bytes.
+void damage(const std::filesystem::path& path, const std::function<void(std::vector<std::uint8_t>&)>& change) {
+  std::vector<std::uint8_t> bytes = bytes_of(path);
+  change(bytes);
+  write_bytes(path, bytes);
 }
 
 // A file with a string attribute "stage" = `stage` on the root and a string dataset "names"; the
@@ -226,12 +224,13 @@ TEST(Hdf5DamagedFile, CheckpointWithZeroedHeapTailIsRefused) {
   c.walls = {{"floor", {}, {}, {}, {}, {}}};
   c.metadata = {{"stage", "lowering"}};
   write_checkpoint(path, c);
-  std::vector<std::uint8_t> bytes = bytes_of(path);
-  const std::size_t heap = find(bytes, "GCOL");
-  const std::size_t size = bytes.at(heap + 8) | std::size_t(bytes.at(heap + 9)) << 8;
-  ASSERT_EQ(size, 4096u);  // HDF5's smallest collection
-  std::fill(bytes.begin() + std::ptrdiff_t(find(bytes, "floor", heap) - 16), bytes.begin() + std::ptrdiff_t(heap + size), 0);
-  write_bytes(path, bytes);
+  std::size_t heap = 0;
+  damage(path, [&](std::vector<std::uint8_t>& bytes) {
+    heap = find(bytes, "GCOL");
+    const std::size_t size = 4096;  // HDF5's smallest collection, as the size field says:
+    ASSERT_EQ(bytes.at(heap + 8) | std::size_t(bytes.at(heap + 9)) << 8, size);
+    std::fill(bytes.begin() + std::ptrdiff_t(find(bytes, "floor", heap) - 16), bytes.begin() + std::ptrdiff_t(heap + size), 0);
+  });
   const std::string m = file_error_of([&] { read_checkpoint(path); });
   EXPECT_NE(m.find(path.string() + ": /: attribute 'format': damaged string storage: the global heap collection at "
                                    "byte " + std::to_string(heap) + " holds object 0 of 0 bytes"),
@@ -251,11 +250,10 @@ TEST(Hdf5DamagedFile, SnapshotIndexWithDamagedLinkMessageIsRefused) {
   Particles p;
   p.add(1, {0.001, 0.001, 0.001}, 0.001, 2500.0);
   append_snapshot(path, make_snapshot(p, 0.0, "pour", 0.0, 0));
-  std::vector<std::uint8_t> bytes = bytes_of(path);
-  // The link message: version 1, flags 0x08 (a link type follows), type 64 (external), a name of 6.
-  const std::size_t link = find(bytes, std::string("\x01\x08\x40\x06" "000000", 10));
-  bytes.at(link + 1) = 0x7e;
-  write_bytes(path, bytes);
+  damage(path, [](std::vector<std::uint8_t>& bytes) {
+    // The link message: version 1, flags 0x08 (a link type follows), type 64 (external), a name of 6.
+    bytes.at(find(bytes, std::string("\x01\x08\x40\x06" "000000", 10)) + 1) = 0x7e;
+  });
   const std::string m = file_error_of([&] { list_snapshots(path); });
   EXPECT_NE(m.find(path.string() + ": /snapshots: cannot read the group's links (damaged link messages?)"),
             std::string::npos)

@@ -13,17 +13,6 @@
 using namespace trapdem;
 using namespace trapdem::io_testing;
 
-namespace {
-std::string file_error_of(const std::function<void()>& action) {
-  try {
-    action();
-  } catch (const FileError& e) {
-    return e.what();
-  }
-  return "";
-}
-}  // namespace
-
 TEST(Hdf5File, DatasetsAndAttributesRoundTrip) {
   ScratchDir dir;
   const auto path = dir / "data.h5";

@@ -8,8 +8,11 @@
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
+#include <functional>
 #include <sstream>
 #include <string>
+
+#include "core/errors.hpp"
 
 namespace trapdem::io_testing {
 
@@ -68,5 +71,15 @@ class FileSizeLimit {
   rlimit saved_{};
   void (*previous_handler_)(int) = nullptr;
 };
+
+// The message of the FileError `action` throws ("" if it throws none).
+inline std::string file_error_of(const std::function<void()>& action) {
+  try {
+    action();
+  } catch (const FileError& e) {
+    return e.what();
+  }
+  return "";
+}
 
 }  // namespace trapdem::io_testing
