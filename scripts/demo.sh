@@ -15,7 +15,7 @@ else
   "$trapdem" run --out "$out"
 fi
 echo
-grep -E '^stage |^finished' "$out/run.log" || true
+grep -E '^stage [a-z-]+ finished|^finished' "$out/run.log" || true  # the stages' summaries, not the progress lines
 echo
 "$trapdem" analyze "$out" --incremental
 echo
