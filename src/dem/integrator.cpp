@@ -5,18 +5,22 @@
 
 namespace trapdem {
 
+EscapeBounds escape_bounds(const Domain& domain) {
+  EscapeBounds b{domain.lower, domain.upper};
+  for (int a = 0; a < 3; ++a) {
+    if (domain.periodic[a]) {
+      b.lo[a] = -std::numeric_limits<double>::infinity();
+      b.hi[a] = std::numeric_limits<double>::infinity();
+    }
+  }
+  return b;
+}
+
 DriftReport first_half_kick_and_drift(Particles& p, std::size_t n, const Vec3* position_at_build, const Vec3& gravity, double dt,
                                       const Domain& domain, bool rotate) {
   const double half = 0.5 * dt;
   const Vec3 g = gravity;
-  // Bounds of the escape check: none on periodic axes.
-  Vec3 lo = domain.lower, hi = domain.upper;
-  for (int a = 0; a < 3; ++a) {
-    if (domain.periodic[a]) {
-      lo[a] = -std::numeric_limits<double>::infinity();
-      hi[a] = std::numeric_limits<double>::infinity();
-    }
-  }
+  const EscapeBounds bounds = escape_bounds(domain);
   Vec3* x = p.position.data();
   Vec3* v = p.velocity.data();
   Vec3* w = p.angular_velocity.data();
@@ -32,20 +36,14 @@ DriftReport first_half_kick_and_drift(Particles& p, std::size_t n, const Vec3* p
   int outside = 0;
 #pragma omp parallel for simd schedule(static) reduction(max : max_d2) reduction(| : outside)
   for (std::size_t i = 0; i < n; ++i) {
-    v[i] += half * (f[i] * inv_m[i] + g);
-    x[i] += dt * v[i];
-    if (rotate) w[i] += (half * inv_i[i]) * t[i];
+    kick_and_drift(x[i], v[i], w[i], f[i], t[i], inv_m[i], inv_i[i], g, half, dt, rotate);
     if (track) max_d2 = std::max(max_d2, norm2(x[i] - x0[i]));
-    const bool inside = x[i].x >= lo.x && x[i].x <= hi.x && x[i].y >= lo.y && x[i].y <= hi.y && x[i].z >= lo.z &&
-                        x[i].z <= hi.z;  // false for NaN too
-    outside |= inside ? 0 : 1;
+    outside |= bounds.inside(x[i]) ? 0 : 1;
   }
   DriftReport report;
   report.max_displacement2 = max_d2;
   for (std::size_t i = 0; outside && i < n; ++i) {
-    const bool inside = x[i].x >= lo.x && x[i].x <= hi.x && x[i].y >= lo.y && x[i].y <= hi.y && x[i].z >= lo.z &&
-                        x[i].z <= hi.z;
-    if (!inside) {
+    if (!bounds.inside(x[i])) {
       report.escaped = std::int64_t(i);
       break;
     }
