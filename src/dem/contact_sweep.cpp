@@ -143,9 +143,11 @@ class BlockSweep {
   // partner, an owner or at a wall); their data then stays in cache until their pairs are done,
   // which spares two passes over the particle state (at 300k particles each streamed from memory).
   void front_before(std::size_t limit) {
+    if (next_front_ >= limit) return;
     if (in_.drift) {
-      for (; next_front_ < limit; ++next_front_)
-        if ((*in_.drift)(next_front_) && found_.escaped < 0) found_.escaped = std::int64_t(next_front_);
+      const std::int64_t escaped = (*in_.drift)(next_front_, limit);
+      if (found_.escaped < 0) found_.escaped = escaped;
+      next_front_ = limit;
     } else {
       for (; next_front_ < limit; ++next_front_) {
         in_.p.force[next_front_] = Vec3{};
@@ -157,11 +159,9 @@ class BlockSweep {
   // The second half kick of the particles before `limit` (their forces are complete), and the
   // forecast of their next displacement.
   void kick_before(std::size_t limit) {
-    for (; next_kick_ < limit; ++next_kick_) {
-      found_.any_bad |= in_.second_half_kick(next_kick_);
-      if (in_.forecast)
-        found_.forecast_displacement2 = std::max(found_.forecast_displacement2, (*in_.forecast)(next_kick_));
-    }
+    if (next_kick_ >= limit) return;
+    found_.any_bad |= kick_and_forecast(in_.second_half_kick, in_.forecast, next_kick_, limit, found_.forecast_displacement2);
+    next_kick_ = limit;
   }
 
   const SweepInputs& in_;
@@ -257,8 +257,9 @@ void Simulation::contacts(bool kick, const Vec3* drift_gravity) {
     std::size_t front = block.begin;
     if (drift) {  // the block's head (the earlier blocks' owners' partners) moves before any block's sweep reads it
       const std::size_t head = std::min(block.end, std::max<std::size_t>(block.begin, partner_reach_[block.begin]));
-      for (; front < head; ++front)
-        if (sweep_drift(front)) escaped = std::min(escaped, std::int64_t(front));
+      const std::int64_t first_out = sweep_drift(front, head);
+      if (first_out >= 0) escaped = std::min(escaped, first_out);
+      front = head;
 #pragma omp barrier
     }
     BlockSweep sweep(in, block, s.batches[std::size_t(me)], s.wall_batches[std::size_t(me)],
@@ -300,10 +301,7 @@ int Simulation::kick_after_deferred_shares(const SecondHalfKick& second_half_kic
   for (int th = 0; th < threads; ++th) {
     const auto [begin, end] = thread_block(p_.size(), th, threads);
     const std::size_t reach = std::min(end, std::max<std::size_t>(begin, partner_reach_[begin]));
-    for (std::size_t p = begin; p < reach; ++p) {
-      any_bad |= second_half_kick(p);
-      if (forecast) forecast_displacement2 = std::max(forecast_displacement2, (*forecast)(p));
-    }
+    if (begin < reach) any_bad |= kick_and_forecast(second_half_kick, forecast, begin, reach, forecast_displacement2);
   }
   return any_bad;
 }

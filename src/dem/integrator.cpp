@@ -51,6 +51,43 @@ DriftReport first_half_kick_and_drift(Particles& p, std::size_t n, const Vec3* p
   return report;
 }
 
+std::int64_t SweepDrift::operator()(std::size_t begin, std::size_t end) const {
+  Vec3* __restrict xs = x;  // local copies: the loop vectorises as first_half_kick_and_drift's does
+  Vec3* __restrict vs = v;
+  Vec3* __restrict ws = w;
+  Vec3* __restrict fs = f;
+  Vec3* __restrict ts = t;
+  const double* __restrict inv_ms = inv_m;
+  const double* __restrict inv_is = inv_i;
+  const Vec3 gravity = g;
+  const EscapeBounds box = bounds;
+  int outside = 0;
+#pragma omp simd reduction(| : outside)
+  for (std::size_t i = begin; i < end; ++i) {
+    kick_and_drift(xs[i], vs[i], ws[i], fs[i], ts[i], inv_ms[i], inv_is[i], gravity, half, dt, rotate);
+    fs[i] = Vec3{};
+    ts[i] = Vec3{};
+    outside |= box.inside(xs[i]) ? 0 : 1;
+  }
+  for (std::size_t i = begin; outside && i < end; ++i)
+    if (!box.inside(xs[i])) return std::int64_t(i);
+  return -1;
+}
+
+int kick_and_forecast(const SecondHalfKick& kick, const DriftForecast* forecast, std::size_t begin, std::size_t end,
+                      double& max_displacement2) {
+  int bad = 0;
+  for (std::size_t p = begin; p < end; ++p) bad |= kick(p);
+  if (forecast) {
+    const DriftForecast next = *forecast;
+    double d2 = max_displacement2;
+#pragma omp simd reduction(max : d2)
+    for (std::size_t p = begin; p < end; ++p) d2 = std::max(d2, next(p));
+    max_displacement2 = d2;
+  }
+  return bad;
+}
+
 void move_walls(std::vector<Wall>& walls, double time, double dt) {
   for (Wall& wall : walls) {
     wall.current_velocity = wall.velocity ? wall.velocity(time + 0.5 * dt) : Vec3{};

@@ -66,9 +66,9 @@ struct SecondHalfKick {
   }
 };
 
-// The first half kick and drift of one particle inside the contact sweep (Simulation::contacts),
-// just before the sweep first reads it; its force and torque, read by the kick, are then cleared
-// for the sweep to sum into. Returns 1 when the particle left the domain's bounded axes.
+// The first half kick and drift of particles inside the contact sweep (Simulation::contacts), a
+// stretch at a time just before the sweep first reads them; their forces and torques, read by
+// the kick, are then cleared for the sweep to sum into.
 struct SweepDrift {
   Vec3* __restrict x;
   Vec3* __restrict v;
@@ -81,12 +81,8 @@ struct SweepDrift {
   double half, dt;
   bool rotate;
   EscapeBounds bounds;
-  int operator()(std::size_t p) const {
-    kick_and_drift(x[p], v[p], w[p], f[p], t[p], inv_m[p], inv_i[p], g, half, dt, rotate);
-    f[p] = Vec3{};
-    t[p] = Vec3{};
-    return bounds.inside(x[p]) ? 0 : 1;
-  }
+  // Particles [begin, end); returns the first that left the domain's bounded axes, or -1.
+  std::int64_t operator()(std::size_t begin, std::size_t end) const;
 };
 
 // The squared displacement since the last list build (m^2) that the next step's first half kick
@@ -109,5 +105,11 @@ struct DriftForecast {
     return norm2(x_next - position_at_build[p]);
   }
 };
+
+// The second half kick of particles [begin, end) and, with a forecast, the largest forecast
+// displacement among them raised into max_displacement2 (m^2). Returns 1 when a kicked state is
+// not finite.
+int kick_and_forecast(const SecondHalfKick& kick, const DriftForecast* forecast, std::size_t begin, std::size_t end,
+                      double& max_displacement2);
 
 }  // namespace trapdem

@@ -95,11 +95,6 @@ std::uint32_t collect_touching_in(PairCursor& at, std::size_t end, const Vec3* _
       __builtin_prefetch(&ahead_of.angular_velocity[ahead]);
       __builtin_prefetch(&ahead_of.force[ahead], 1);
       __builtin_prefetch(&ahead_of.torque[ahead], 1);
-      const std::uint32_t history_ahead = std::min(next + kHistoryAhead + (last - first[i]), no_history);
-      for (; prefetched < history_ahead; ++prefetched) {
-        __builtin_prefetch(&ahead_of.history[prefetched]);
-        __builtin_prefetch(&ahead_of.next_history[prefetched], 1);
-      }
     }
     for (std::uint32_t k = std::max(at.pair, first[i]); k < last; ++k) {
       const std::uint32_t j = partner[k];
@@ -117,6 +112,9 @@ std::uint32_t collect_touching_in(PairCursor& at, std::size_t end, const Vec3* _
       batch.separation[2][count] = d.z;
       count += touching ? 1u : 0u;
       next += touching ? 1u : 0u;
+      const std::uint32_t history_ahead = std::min(next + kHistoryAhead, no_history);
+      __builtin_prefetch(&ahead_of.history[history_ahead]);
+      __builtin_prefetch(&ahead_of.next_history[history_ahead], 1);
       if (count == ContactBatch::kCapacity) {
         at = {i, k + 1, prefetched};
         next_contact = next;
