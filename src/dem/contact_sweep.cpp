@@ -3,8 +3,6 @@
 #include <omp.h>
 
 #include <algorithm>
-#include <cstdint>
-#include <limits>
 
 #include "dem/integrator.hpp"
 #include "dem/pair_list.hpp"
@@ -35,20 +33,6 @@ struct SweepInputs {
   const std::uint32_t* partner_reach;  // per owner: one past the highest partner of those below
   const SecondHalfKick& second_half_kick;
   bool kick;
-  const SweepDrift* drift;        // the first half kick and drift at the front, or null (done before)
-  const DriftForecast* forecast;  // with the kick: the next step's displacement, or null
-};
-
-// How far ahead of the owner the sweep's front runs: the owners a collect_touching call may visit
-// (a batch of 64 contacts fills within ~35 owners in a settled bed, 1.85 touching half pairs each).
-constexpr std::size_t kOwnersAhead = 128;
-
-// What one thread's sweep found besides the forces.
-struct SweepFindings {
-  double max_overlap = 0.0;               // overlap / smaller radius
-  int any_bad = 0;                        // a kicked particle's state is not finite
-  std::int64_t escaped = -1;              // the first particle the front's drift took out of the domain
-  double forecast_displacement2 = 0.0;    // m^2, the largest DriftForecast of the kicked particles
 };
 
 // One thread's sweep over its block of particles, contact-major: batch by batch, the touching
@@ -60,21 +44,26 @@ class BlockSweep {
              std::vector<PartnerShare>& later, Vec3* wall_loads)
       : in_(in), block_(block), batch_(batch), wall_batch_(wall_batch), later_(later), wall_loads_(wall_loads) {}
 
-  // The particles before `front` are kicked, drifted and cleared already (the block's head, see
-  // Simulation::contacts).
-  SweepFindings run(std::size_t front) {
-    next_front_ = front;
+  // Returns 1 when a kicked particle's state is not finite; raises max_overlap to the largest
+  // overlap / smaller radius seen.
+  int run(double& max_overlap) {
+    max_overlap_ = max_overlap;
     start();
     sweep_pairs();
     finish();
-    return found_;
+    max_overlap = max_overlap_;
+    return any_bad_;
   }
 
  private:
-  // Empty shares and batches; the cursors at the block's start.
+  // Empty shares, forces and batches; the cursors at the block's start.
   void start() {
     const auto [begin, end] = block_;
     later_.clear();
+    for (std::size_t i = begin; i < end; ++i) {
+      in_.p.force[i] = Vec3{};
+      in_.p.torque[i] = Vec3{};
+    }
     wall_batch_.count = 0;
     next_near_wall_ = std::lower_bound(in_.near_walls, in_.near_walls_end, std::uint32_t(begin));
     // The particles below the highest partner of the earlier blocks' owners get a share after
@@ -92,20 +81,15 @@ class BlockSweep {
                                  p.torque.data(),   in_.history,             in_.next_history};
     const BodyArrays bodies{p.radius.data(), p.mass.data(), p.inv_inertia.data(), p.velocity.data(),
                             p.angular_velocity.data()};
+    PairCursor at{begin, 0};
     std::uint32_t next_contact = in_.first[begin];  // this block's part of next_history
-    PairCursor at{begin, 0, next_contact};
     sums_ = {begin, Vec3{}, Vec3{}};
     while (at.owner < end) {
-      // The owners this call may visit, and their partners, at their new positions with their
-      // forces cleared (partner_reach is one past the highest partner of the owners below).
-      const std::size_t stop = std::min(end, at.owner + kOwnersAhead);
-      front_before(std::max<std::size_t>(stop, std::min<std::size_t>(end, in_.partner_reach[stop])));
-      const std::uint32_t first_contact = next_contact;
-      const std::uint32_t count = collect_touching(at, stop, p.position.data(), p.radius.data(), in_.lists, next_contact,
+      const std::uint32_t count = collect_touching(at, end, p.position.data(), p.radius.data(), in_.lists, next_contact,
                                                    in_.domain, in_.periodic, batch_, ahead_of, p.size());
       in_.pair_law(batch_, count, in_.pair_params, bodies, in_.history, in_.dt);
-      add_batch_shares(batch_, count, first_contact, end, p.force.data(), p.torque.data(), in_.next_history, sums_,
-                       later_, found_.max_overlap);
+      add_batch_shares(batch_, count, end, p.force.data(), p.torque.data(), in_.next_history, sums_, later_,
+                       max_overlap_);
       walls_before(sums_.owner);  // the particles before the current owner have all their pair shares
       kick_before(wall_batch_.count > 0 ? std::min<std::size_t>(sums_.owner, wall_batch_.particle[0]) : sums_.owner);
     }
@@ -114,7 +98,6 @@ class BlockSweep {
   // The last owner's sums, the remaining walls, the remaining kicks.
   void finish() {
     const auto [begin, end] = block_;
-    front_before(end);
     if (begin < end) {
       in_.p.force[sums_.owner] += sums_.force;
       in_.p.torque[sums_.owner] += sums_.torque;
@@ -135,33 +118,12 @@ class BlockSweep {
   }
 
   void run_wall_batch() {
-    wall_forces(wall_batch_, in_.wall_laws, in_.p, in_.wall_list, in_.dt, wall_loads_, found_.max_overlap);
+    wall_forces(wall_batch_, in_.wall_laws, in_.p, in_.wall_list, in_.dt, wall_loads_, max_overlap_);
   }
 
-  // The front: the particles before `limit` get their first half kick and drift (when the sweep
-  // does them) and their force and torque cleared, just before the sweep first reads them (as a
-  // partner, an owner or at a wall); their data then stays in cache until their pairs are done,
-  // which spares two passes over the particle state (at 300k particles each streamed from memory).
-  void front_before(std::size_t limit) {
-    if (next_front_ >= limit) return;
-    if (in_.drift) {
-      const std::int64_t escaped = (*in_.drift)(next_front_, limit);
-      if (found_.escaped < 0) found_.escaped = escaped;
-      next_front_ = limit;
-    } else {
-      for (; next_front_ < limit; ++next_front_) {
-        in_.p.force[next_front_] = Vec3{};
-        in_.p.torque[next_front_] = Vec3{};
-      }
-    }
-  }
-
-  // The second half kick of the particles before `limit` (their forces are complete), and the
-  // forecast of their next displacement.
+  // The second half kick of the particles before `limit` (their forces are complete).
   void kick_before(std::size_t limit) {
-    if (next_kick_ >= limit) return;
-    found_.any_bad |= kick_and_forecast(in_.second_half_kick, in_.forecast, next_kick_, limit, found_.forecast_displacement2);
-    next_kick_ = limit;
+    for (; next_kick_ < limit; ++next_kick_) any_bad_ |= in_.second_half_kick(next_kick_);
   }
 
   const SweepInputs& in_;
@@ -171,10 +133,10 @@ class BlockSweep {
   std::vector<PartnerShare>& later_;
   Vec3* wall_loads_;
   const std::uint32_t* next_near_wall_ = nullptr;
-  std::size_t next_front_ = 0;
   std::size_t next_kick_ = 0;
   OwnerSums sums_{};
-  SweepFindings found_{};
+  double max_overlap_ = 0.0;
+  int any_bad_ = 0;
 };
 
 }  // namespace
@@ -195,15 +157,7 @@ class BlockSweep {
 // 80k particles), and run through the law in batches of their own. Each thread sums its own wall
 // loads; the threads' sums are added in thread order. With `kick`, each particle also gets the
 // second half kick of the step as soon as its force is complete.
-void Simulation::contacts(bool kick) { contacts(kick, nullptr); }
-
-// With `drift_gravity` (the gravity at the start of the step), the step's first half kick and
-// drift are done here, each particle's just before the sweep first reads it (SweepDrift): the
-// caller has decided on the lists from the forecast displacement (Simulation::step). With the
-// kick, and on one process, the sweep also forecasts the next step's displacements
-// (DriftForecast) for that decision.
-void Simulation::contacts(bool kick, const Vec3* drift_gravity) {
-  const bool drift = drift_gravity != nullptr;
+void Simulation::contacts(bool kick) {
   const std::size_t n = p_.size();
   const int threads = omp_get_max_threads();
   ContactSweep& s = *sweep_;
@@ -212,18 +166,9 @@ void Simulation::contacts(bool kick, const Vec3* drift_gravity) {
   s.wall_batches.resize(std::size_t(threads));
   const std::size_t n_walls = walls_.size();
   s.wall_loads.assign(std::size_t(threads) * n_walls * 2, Vec3{});  // force, torque per thread and wall
-  const Vec3 g = gravity();  // at the end of the step, for the second half kick
-  const bool rotate = !settings_.freeze_rotation;
   const SecondHalfKick second_half_kick{p_.velocity.data(), p_.angular_velocity.data(), p_.force.data(),
                                         p_.torque.data(),   p_.inv_mass.data(),         p_.inv_inertia.data(),
-                                        g,                  0.5 * dt_,                  rotate};
-  const SweepDrift sweep_drift{p_.position.data(), p_.velocity.data(), p_.angular_velocity.data(),
-                               p_.force.data(),    p_.torque.data(),   p_.inv_mass.data(),
-                               p_.inv_inertia.data(), drift ? *drift_gravity : g, 0.5 * dt_,
-                               dt_,                rotate,             escape_bounds(settings_.domain)};
-  const bool forecast = kick && !decomposition_ && position_at_build_.size() == n;
-  const DriftForecast drift_forecast{p_.position.data(), p_.velocity.data(), p_.force.data(), p_.inv_mass.data(),
-                                     position_at_build_.data(), g, 0.5 * dt_, dt_};
+                                        gravity(),          0.5 * dt_,                  !settings_.freeze_rotation};
   const SweepInputs in{p_,
                        settings_.domain,
                        settings_.domain.any_periodic(),
@@ -242,42 +187,20 @@ void Simulation::contacts(bool kick, const Vec3* drift_gravity) {
                        particles_near_walls_.data() + particles_near_walls_.size(),
                        partner_reach_.data(),
                        second_half_kick,
-                       kick,
-                       drift ? &sweep_drift : nullptr,
-                       forecast ? &drift_forecast : nullptr};
+                       kick};
   double max_overlap = 0.0;
   int any_bad = 0;
-  double forecast_d2 = 0.0;
-  constexpr std::int64_t kNone = std::numeric_limits<std::int64_t>::max();
-  std::int64_t escaped = kNone;
-#pragma omp parallel reduction(max : max_overlap, forecast_d2) reduction(| : any_bad) reduction(min : escaped)
+#pragma omp parallel reduction(max : max_overlap) reduction(| : any_bad)
   {
     const int me = omp_get_thread_num();
-    const ThreadBlock block = thread_block(n, me, omp_get_num_threads());
-    std::size_t front = block.begin;
-    if (drift) {  // the block's head (the earlier blocks' owners' partners) moves before any block's sweep reads it
-      const std::size_t head = std::min(block.end, std::max<std::size_t>(block.begin, partner_reach_[block.begin]));
-      const std::int64_t first_out = sweep_drift(front, head);
-      if (first_out >= 0) escaped = std::min(escaped, first_out);
-      front = head;
-#pragma omp barrier
-    }
-    BlockSweep sweep(in, block, s.batches[std::size_t(me)], s.wall_batches[std::size_t(me)],
-                     s.deferred[std::size_t(me)], s.wall_loads.data() + std::size_t(me) * n_walls * 2);
-    const SweepFindings found = sweep.run(front);
-    max_overlap = std::max(max_overlap, found.max_overlap);
-    any_bad |= found.any_bad;
-    forecast_d2 = std::max(forecast_d2, found.forecast_displacement2);
-    if (found.escaped >= 0) escaped = std::min(escaped, found.escaped);
+    BlockSweep sweep(in, thread_block(n, me, omp_get_num_threads()), s.batches[std::size_t(me)],
+                     s.wall_batches[std::size_t(me)], s.deferred[std::size_t(me)],
+                     s.wall_loads.data() + std::size_t(me) * n_walls * 2);
+    any_bad |= sweep.run(max_overlap);
   }
   add_deferred_shares();
-  if (kick)
-    any_bad |= kick_after_deferred_shares(second_half_kick, forecast ? &drift_forecast : nullptr, forecast_d2, threads);
+  if (kick) any_bad |= kick_after_deferred_shares(second_half_kick, threads);
   bad_particle_ = any_bad ? first_non_finite_particle() : -1;
-  if (drift) escaped_particle_ = escaped == kNone ? -1 : escaped;
-  forecast_valid_ = forecast;
-  forecast_displacement2_ = forecast_d2;
-  forecast_gravity_ = g;
   contacts_.swap(contacts_next_);
   max_overlap_seen_ = max_overlap;
   sum_wall_loads(threads);
@@ -295,13 +218,12 @@ void Simulation::add_deferred_shares() {
 
 // The particles that received a share after the sweep, block by block: each block's particles
 // below the highest partner of the earlier blocks' owners (partner_reach_).
-int Simulation::kick_after_deferred_shares(const SecondHalfKick& second_half_kick, const DriftForecast* forecast,
-                                           double& forecast_displacement2, int threads) {
+int Simulation::kick_after_deferred_shares(const SecondHalfKick& second_half_kick, int threads) {
   int any_bad = 0;
   for (int th = 0; th < threads; ++th) {
     const auto [begin, end] = thread_block(p_.size(), th, threads);
     const std::size_t reach = std::min(end, std::max<std::size_t>(begin, partner_reach_[begin]));
-    if (begin < reach) any_bad |= kick_and_forecast(second_half_kick, forecast, begin, reach, forecast_displacement2);
+    for (std::size_t p = begin; p < reach; ++p) any_bad |= second_half_kick(p);
   }
   return any_bad;
 }

@@ -68,8 +68,7 @@ struct PairBatchLaw {
 // prefetched. The contact histories are read through the batch law's gathers and written in
 // add_batch_shares, both about in pair order: without help, each of their cache lines beyond the
 // last level cache was a wait for memory (the 80k benchmark ran ~30 % slower per particle than the
-// 20k one). They are prefetched kHistoryAhead contacts ahead of the one being collected, each
-// contact's once (the cursor's `prefetched`), at each owner for as many contacts as it has listed pairs.
+// 20k one). They are prefetched kHistoryAhead contacts ahead of the one being collected.
 constexpr std::uint32_t kHistoryAhead = 24;  // contacts; 24-48 measured alike at 80k, 96 less good
 
 template <bool kPeriodic>
@@ -82,7 +81,6 @@ std::uint32_t collect_touching_in(PairCursor& at, std::size_t end, const Vec3* _
   std::uint32_t* __restrict pair_contact = lists.pair_contact;
   const std::uint32_t no_history = lists.no_history;
   std::uint32_t next = next_contact;
-  std::uint32_t prefetched = at.prefetched;
   std::uint32_t count = 0;
   for (std::size_t i = at.owner; i < end; ++i) {
     const Vec3 xi = x[i];
@@ -107,6 +105,7 @@ std::uint32_t collect_touching_in(PairCursor& at, std::size_t end, const Vec3* _
       batch.owner[count] = std::uint32_t(i);
       batch.partner[count] = j;
       batch.history_in[count] = last_step == kNoContact ? no_history : last_step;
+      batch.history_out[count] = next;
       batch.separation[0][count] = d.x;
       batch.separation[1][count] = d.y;
       batch.separation[2][count] = d.z;
@@ -116,13 +115,13 @@ std::uint32_t collect_touching_in(PairCursor& at, std::size_t end, const Vec3* _
       __builtin_prefetch(&ahead_of.history[history_ahead]);
       __builtin_prefetch(&ahead_of.next_history[history_ahead], 1);
       if (count == ContactBatch::kCapacity) {
-        at = {i, k + 1, prefetched};
+        at = {i, k + 1};
         next_contact = next;
         return count;
       }
     }
   }
-  at = {end, 0, prefetched};
+  at = {end, 0};
   next_contact = next;
   return count;
 }
@@ -139,9 +138,9 @@ std::uint32_t collect_touching(PairCursor& at, std::size_t end, const Vec3* __re
                   : collect_touching_in<false>(at, end, x, r, lists, next_contact, dom, batch, ahead_of, n);
 }
 
-void add_batch_shares(const ContactBatch& __restrict batch, std::uint32_t count, std::uint32_t first_contact,
-                      std::size_t end, Vec3* __restrict f, Vec3* __restrict t, ContactHistory* __restrict history,
-                      OwnerSums& sums, std::vector<PartnerShare>& later, double& max_overlap) {
+void add_batch_shares(const ContactBatch& __restrict batch, std::uint32_t count, std::size_t end, Vec3* __restrict f,
+                      Vec3* __restrict t, ContactHistory* __restrict history, OwnerSums& sums,
+                      std::vector<PartnerShare>& later, double& max_overlap) {
   for (std::uint32_t q = 0; q < count; ++q) {
     const std::uint32_t i = batch.owner[q], j = batch.partner[q];
     if (i != sums.owner) {
@@ -150,7 +149,7 @@ void add_batch_shares(const ContactBatch& __restrict batch, std::uint32_t count,
       sums = {i, Vec3{}, Vec3{}};
     }
     max_overlap = std::max(max_overlap, batch.overlap_ratio[q]);
-    ContactHistory& h = history[first_contact + q];
+    ContactHistory& h = history[batch.history_out[q]];
     h.tangential_spring = {batch.spring[0][q], batch.spring[1][q], batch.spring[2][q]};
     h.rolling_spring = {batch.rolling_spring[0][q], batch.rolling_spring[1][q], batch.rolling_spring[2][q]};
     h.flags = batch.flags[q];

@@ -18,7 +18,8 @@ struct ContactBatch {
   static constexpr std::uint32_t kCapacity = 64;
   alignas(64) std::uint32_t owner[kCapacity];
   alignas(64) std::uint32_t partner[kCapacity];
-  alignas(64) std::uint32_t history_in[kCapacity];  // index of the pair's history of the last step
+  alignas(64) std::uint32_t history_in[kCapacity];   // index of the pair's history of the last step
+  alignas(64) std::uint32_t history_out[kCapacity];  // where this step's goes
   alignas(64) double separation[3][kCapacity];  // m, x_owner - x_partner (minimum image)
   alignas(64) double overlap_ratio[kCapacity];  // overlap / smaller radius
   alignas(64) double force[3][kCapacity];       // N, on the owner
@@ -38,12 +39,10 @@ using PairBatchLawFn = void (*)(ContactBatch&, std::uint32_t, const LawParams&, 
                                 const ContactHistory*, double);
 PairBatchLawFn pair_batch_law(const LawChoices& choices);
 
-// Where collect_touching() stopped: the owner and its next listed pair; and the contact index up
-// to which the histories are prefetched.
+// Where collect_touching() stopped: the owner and its next listed pair.
 struct PairCursor {
   std::size_t owner;
   std::uint32_t pair;
-  std::uint32_t prefetched;
 };
 
 // What the sweep prefetches (see collect_touching).
@@ -77,12 +76,10 @@ struct OwnerSums {
   Vec3 force, torque;
 };
 
-// Stores the batch's histories (contact q's at index first_contact + q: the batch's contacts are
-// consecutive in this step's compact array) and adds its forces and torques in pair order: the
-// partner's share at once (or, for a partner at or beyond `end`, in `later`), the owner's summed
-// until its last pair.
-void add_batch_shares(const ContactBatch& __restrict batch, std::uint32_t count, std::uint32_t first_contact,
-                      std::size_t end, Vec3* __restrict f, Vec3* __restrict t, ContactHistory* __restrict history,
-                      OwnerSums& sums, std::vector<PartnerShare>& later, double& max_overlap);
+// Stores the batch's histories and adds its forces and torques in pair order: the partner's share
+// at once (or, for a partner at or beyond `end`, in `later`), the owner's summed until its last pair.
+void add_batch_shares(const ContactBatch& __restrict batch, std::uint32_t count, std::size_t end, Vec3* __restrict f,
+                      Vec3* __restrict t, ContactHistory* __restrict history, OwnerSums& sums,
+                      std::vector<PartnerShare>& later, double& max_overlap);
 
 }  // namespace trapdem

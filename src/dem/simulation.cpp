@@ -50,14 +50,12 @@ Simulation& Simulation::operator=(Simulation&&) noexcept = default;
 Simulation::~Simulation() = default;
 
 void Simulation::set_gravity(const Vec3& g) {
-  forecast_valid_ = false;
   constant_gravity_ = g;
   gravity_is_constant_ = true;
   gravity_ = nullptr;
 }
 
 void Simulation::set_gravity(std::function<Vec3(double)> g) {
-  forecast_valid_ = false;
   gravity_ = std::move(g);
   gravity_is_constant_ = false;
 }
@@ -141,11 +139,6 @@ void Simulation::run(std::int64_t steps) {
 // One time step: velocity Verlet as LAMMPS's nve/sphere does it (half kick, drift, forces at the
 // new positions with the half-step velocities, half kick). Second order in dt for conservative
 // forces; the dashpot sees velocities half a step old, which is first order and standard in DEM.
-// The lists are rebuilt when a particle would move more than half the skin since the last build.
-// The last step's second half kick forecast that displacement exactly (DriftForecast): when it
-// stands and calls for no rebuild, the first half kick and drift are done inside the contact
-// sweep, each particle's just before the sweep first reads it (one pass over the particle state
-// instead of two); otherwise in a pass of their own before the rebuild. Both give the same bits.
 void Simulation::step() {
   if (decomposition_) {
     step_decomposed();
@@ -156,23 +149,9 @@ void Simulation::step() {
     contacts(false);
     setup_done_ = true;
   }
-  const Vec3 g = gravity();  // at the start of the step, for the first half kick
-  bool drift_in_sweep = forecast_valid_ && lists_valid_ && g == forecast_gravity_;
-  if (drift_in_sweep) {
-    max_displacement2_ = forecast_displacement2_;
-    escaped_particle_ = -1;
-    advance_walls_and_clock();
-    if (lists_outdated()) {
-      drift_particles(g);
-      drift_in_sweep = false;
-    }
-  } else {
-    drift_particles(g);
-    advance_walls_and_clock();
-  }
+  integrate_positions();
   update_neighbours_if_needed();
-  contacts(true, drift_in_sweep ? &g : nullptr);  // with the second half kick
-  stats_.drifts_in_sweep += drift_in_sweep ? 1 : 0;
+  contacts(true);  // with the second half kick
   ++stats_.steps;
   check_stability();
 }
@@ -236,21 +215,13 @@ PairList Simulation::pairs() const {
 }
 
 void Simulation::integrate_positions() {
-  drift_particles(gravity());
-  advance_walls_and_clock();
-}
-
-void Simulation::drift_particles(const Vec3& g) {
   // Particles added since the last build have no reference position: the lists are invalid then
   // and will be rebuilt anyway.
   const bool track = lists_valid_ && position_at_build_.size() == p_.size();
-  const DriftReport drift = first_half_kick_and_drift(p_, owned_count(), track ? position_at_build_.data() : nullptr, g, dt_,
+  const DriftReport drift = first_half_kick_and_drift(p_, owned_count(), track ? position_at_build_.data() : nullptr, gravity(), dt_,
                                                       settings_.domain, !settings_.freeze_rotation);
   max_displacement2_ = drift.max_displacement2;
   escaped_particle_ = drift.escaped;
-}
-
-void Simulation::advance_walls_and_clock() {
   move_walls(walls_, time_, dt_);
   time_ += dt_;
 }
@@ -355,7 +326,6 @@ void Simulation::restore(double time, const SimulationStats& stats, ListState li
   find_partner_reach();
   history_pending_ = false;
   lists_valid_ = true;
-  forecast_valid_ = false;  // the next step drifts in a pass of its own
   setup_done_ = true;
 }
 

@@ -32,8 +32,6 @@ struct SimulationStats {
   std::int64_t rebuilds = 0;
   std::int64_t steps = 0;
   double rebuild_seconds = 0.0;  // s of wall-clock time in rebuilds, in this process (not checkpointed)
-  // Steps whose first half kick and drift the contact sweep did (Simulation::step; not checkpointed).
-  std::int64_t drifts_in_sweep = 0;
   // On a rank of a decomposition (this process; not checkpointed): the ghosts held, summed over
   // the steps (mean halo = ghost_steps / steps), and the wall-clock seconds spent in the ghost
   // exchanges (positions out, forces back) and the reductions of the step.
@@ -43,7 +41,6 @@ struct SimulationStats {
 
 struct ContactSweep;    // the engine's contact workspace (contact_sweep.hpp)
 struct SecondHalfKick;  // integrator.hpp
-struct DriftForecast;   // integrator.hpp
 class Decomposition;    // the parallel back end (decomposition.hpp)
 
 class Simulation {
@@ -137,9 +134,7 @@ class Simulation {
   double max_overlap_fraction() const { return max_overlap_seen_; }
 
  private:
-  void integrate_positions();  // drift_particles and advance_walls_and_clock
-  void drift_particles(const Vec3& gravity);  // the first half kick and drift, a pass of its own
-  void advance_walls_and_clock();
+  void integrate_positions();
   bool lists_outdated() const;
   void update_neighbours_if_needed();
   void step_decomposed();        // decomposed_step.cpp
@@ -148,19 +143,13 @@ class Simulation {
   double global_sum(double local) const;
   void rebuild_lists();
   // Particle pairs and walls, and with kick the second half kick (contact_sweep.cpp).
-  // With drift_gravity, also the first half kick and drift, each particle's just before the sweep reads it.
   void contacts(bool kick);
-  void contacts(bool kick, const Vec3* drift_gravity);
   void add_deferred_shares();
-  int kick_after_deferred_shares(const SecondHalfKick& second_half_kick, const DriftForecast* forecast,
-                                 double& forecast_displacement2, int threads);
+  int kick_after_deferred_shares(const SecondHalfKick& second_half_kick, int threads);
   std::int64_t first_non_finite_particle() const;
   void sum_wall_loads(int threads);
   void check_stability() const;  // diagnostics.cpp
-  void invalidate_lists() {
-    lists_valid_ = false;
-    forecast_valid_ = false;
-  }
+  void invalidate_lists() { lists_valid_ = false; }
   void find_particles_near_walls();
   void find_partner_reach();
   void size_contact_arrays();
@@ -206,12 +195,6 @@ class Simulation {
 
   // Set by the kernels, read by check_stability().
   double max_displacement2_ = 0.0;
-  // The forecast of the next step's largest displacement since the list build (DriftForecast),
-  // made in the second half kick; valid while nothing changes the state between steps (dropped
-  // by invalidate_lists, set_gravity, restore) and for the gravity it was made with.
-  bool forecast_valid_ = false;
-  double forecast_displacement2_ = 0.0;  // m^2
-  Vec3 forecast_gravity_;
   double max_overlap_seen_ = 0.0;
   std::int64_t bad_particle_ = -1;     // non-finite state
   std::int64_t escaped_particle_ = -1;
