@@ -3,7 +3,7 @@
 // the LIGGGHTS-equivalent contact law (hooke/stiffness, tangential history, rolling epsd2).
 //
 // Usage: standard --data pack_W0.1.data --width 0.1 --steps 5000 --threads 1 --warmup 300
-//                 [--tile K] [--write FILE]
+//                 [--tile K] [--write FILE] [--skin S]
 // --tile K lays K copies of the packing side by side along x (a box K W wide, K N particles, x
 // walls at 0 and K W only); --write FILE writes the final state as a LAMMPS data file. Together
 // they make the paper-scale bed (bench/common.sh: 15 copies of the 20k bed, settled for 20 000
@@ -11,6 +11,8 @@
 // interlocking and collapse into each other (contacts per particle fell to ~0.4 there within
 // 300 steps and the disturbance crossed the copy), so the tiled bed must settle before it is a
 // benchmark bed; after 20 000 steps its contacts per particle are 3.6-3.8 everywhere, as the 20k bed's.
+// --skin S sets the Verlet skin (m; the problem's is 0.4 mm): a smaller skin lists fewer pairs for
+// the sweep to test each step and rebuilds the lists more often (the '#' line gives both).
 // Prints one line "trapdem N=19928 threads=1 Mpsteps/s=12.34" and a '#' line with the run's
 // sanity figures: contacts per particle, neighbour-list rebuilds in the timed steps and the seconds
 // they took (rebuild_s, part of loop_s), the largest overlap, the kinetic energy.
@@ -41,15 +43,17 @@ struct Options {
   long warmup = 300;
   int tile = 1;
   std::string write;
+  double skin = 4.0e-4;  // m
 };
 
 [[noreturn]] void usage(const char* prog, const std::string& why) {
   std::fprintf(stderr,
-               "%s: %s\nusage: %s --data FILE --width W [--steps N] [--threads T] [--warmup K] [--tile C] [--write OUT]\n"
+               "%s: %s\nusage: %s --data FILE --width W [--steps N] [--threads T] [--warmup K] [--tile C] [--write OUT] [--skin S]\n"
                "  FILE  LAMMPS data file (atom_style sphere) of the settled packing\n"
                "  W     box width in m of FILE (0.1 -> N=19928, 0.4 -> N=80560)\n"
                "  C     copies of the packing along x (0.1 with 15: N=298920, 1.5 m wide)\n"
-               "  OUT   LAMMPS data file of the final state\n",
+               "  OUT   LAMMPS data file of the final state\n"
+               "  S     Verlet skin in m (the standard problem's: 4e-4)\n",
                prog, why.c_str(), prog);
   std::exit(2);
 }
@@ -74,6 +78,7 @@ Options parse(int argc, char** argv) {
     else if (a == "--warmup") o.warmup = static_cast<long>(num(0));
     else if (a == "--tile") o.tile = static_cast<int>(num(1));
     else if (a == "--write") o.write = v;
+    else if (a == "--skin") o.skin = num(1e-9);
     else usage(argv[0], "unknown option " + a);
   }
   if (o.data.empty()) usage(argv[0], "--data is required");
@@ -104,7 +109,7 @@ int run(const Options& o) {
   const std::size_t n = data.particles.size();
   const double width = o.width * o.tile;  // m
 
-  Simulation sim = standard_problem(std::move(data.particles), width);
+  Simulation sim = standard_problem(std::move(data.particles), width, o.skin);
 
   sim.run(o.warmup);
   const std::int64_t rebuilds0 = sim.stats().rebuilds;
@@ -123,11 +128,12 @@ int run(const Options& o) {
   const double rate = double(n) * double(o.steps) / seconds / 1e6;
   const double contacts_per_particle = 2.0 * double(sim.contact_count()) / double(n);
   std::printf("trapdem N=%zu threads=%d Mpsteps/s=%.3f\n", n, o.threads, rate);
+  const double listed_per_particle = double(sim.pairs().size()) / double(n);  // half pairs
   std::printf("# loop_s=%.3f steps=%ld warmup=%ld contacts/particle=%.4f rebuilds=%lld rebuild_s=%.3f "
-              "max_overlap=%.3f%% ke_start=%.4g J ke_end=%.4g J\n",
+              "max_overlap=%.3f%% ke_start=%.4g J ke_end=%.4g J skin=%.3g m listed_pairs/particle=%.3f\n",
               seconds, o.steps, o.warmup, contacts_per_particle,
               static_cast<long long>(sim.stats().rebuilds - rebuilds0), sim.stats().rebuild_seconds - rebuild_seconds0,
-              100.0 * max_overlap, ke0, sim.kinetic_energy());
+              100.0 * max_overlap, ke0, sim.kinetic_energy(), o.skin, listed_per_particle);
   if (!o.write.empty()) {
     LammpsWriteOptions w;
     w.title = "trapdem bench bed: " + std::to_string(o.tile) + " x " + o.data + ", settled " +
