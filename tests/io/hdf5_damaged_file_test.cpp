@@ -59,6 +59,15 @@ void damage(const std::filesystem::path& path, const std::function<void(std::vec
   std::filesystem::rename(copy, path);
 }
 
+// snapshots.h5 in `dir` with `count` snapshots of one particle (each in its own file, linked).
+std::filesystem::path snapshot_index(const ScratchDir& dir, int count) {
+  const auto path = dir / "snapshots.h5";
+  Particles p;
+  p.add(1, {0.001, 0.001, 0.001}, 0.001, 2500.0);
+  for (int k = 0; k < count; ++k) append_snapshot(path, make_snapshot(p, 0.1 * k, "pour", 0.001 * k, 10 * k));
+  return path;
+}
+
 // A file with a string attribute "stage" = `stage` on the root and a string dataset "names"; the
 // global heap collection (8-byte lengths, as HDF5 writes by default): "GCOL", version, 3
 // reserved bytes, the collection's size (8 bytes) at +8, objects from +16, each an index (2), a
@@ -253,10 +262,7 @@ TEST(Hdf5DamagedFile, CheckpointWithZeroedHeapTailIsRefused) {
 // them through a name lookup first, which fails cleanly.
 TEST(Hdf5DamagedFile, SnapshotIndexWithDamagedLinkMessageIsRefused) {
   ScratchDir dir;
-  const auto path = dir / "snapshots.h5";
-  Particles p;
-  p.add(1, {0.001, 0.001, 0.001}, 0.001, 2500.0);
-  append_snapshot(path, make_snapshot(p, 0.0, "pour", 0.0, 0));
+  const auto path = snapshot_index(dir, 1);
   damage(path, [](std::vector<std::uint8_t>& bytes) {
     // The link message: version 1, flags 0x08 (a link type follows), type 64 (external), a name of 6.
     bytes.at(find(bytes, std::string("\x01\x08\x40\x06" "000000", 10)) + 1) = 0x7e;
@@ -278,11 +284,7 @@ TEST(Hdf5DamagedFile, SnapshotIndexWithDamagedLinkMessageIsRefused) {
 // naming the file, where the child was, and the signal.
 TEST(Hdf5DamagedFile, LinkInfoWithAWildHeapAddressIsRefusedNotCrashedOn) {
   ScratchDir dir;
-  const auto path = dir / "snapshots.h5";
-  Particles p;
-  p.add(1, {0.001, 0.001, 0.001}, 0.001, 2500.0);
-  append_snapshot(path, make_snapshot(p, 0.0, "pour", 0.0, 0));
-  append_snapshot(path, make_snapshot(p, 0.1, "lowering", 0.001, 10));
+  const auto path = snapshot_index(dir, 2);
   damage(path, [](std::vector<std::uint8_t>& bytes) {
     // The message's header (type 2, size 24, flags 0, 3 reserved bytes) and its body up to the
     // first address byte; the group is the file's only one whose links are messages.
