@@ -10,6 +10,7 @@
 #include <fmt/format.h>
 
 #include "io/hdf5_global_heap.hpp"
+#include "io/hdf5_probe.hpp"
 
 namespace trapdem {
 
@@ -102,6 +103,12 @@ Hdf5Handle open_dataset(const Hdf5Group& g, std::string_view name, std::size_t c
   if (!g.has(name)) throw FileError(fmt::format("{}: no such dataset", g.describe(name)));
   Hdf5Handle set(H5Dopen2(g.id(), key.c_str(), H5P_DEFAULT));
   if (!set.valid()) fail(g.describe(name), "cannot open the dataset");
+  // A virtual dataset's values are read from other files, which the probe before the open did
+  // not see (io/hdf5_probe); trapdem's files and h5py's ordinary ones hold their values.
+  Hdf5Handle creation(H5Dget_create_plist(set.get()));
+  if (creation.valid() && H5Pget_layout(creation.get()) == H5D_VIRTUAL)
+    throw FileError(fmt::format("{}: a virtual dataset (its values are in other files): expected one that holds "
+                                "its values", g.describe(name)));
   Hdf5Handle space(H5Dget_space(set.get()));
   const int rank = H5Sget_simple_extent_ndims(space.get());
   hsize_t dims[H5S_MAX_RANK] = {};
@@ -441,13 +448,16 @@ Hdf5File Hdf5File::create(const fs::path& path) {
   Hdf5Handle fapl = file_access_list();
   Hdf5Handle file(H5Fcreate(path.c_str(), H5F_ACC_TRUNC, H5P_DEFAULT, fapl.get()));
   if (!file.valid()) fail(path.string(), "cannot create the HDF5 file");
-  return Hdf5File(path.string(), "/", std::move(file));
+  Hdf5File out(path.string(), "/", std::move(file));
+  out.written_here_ = true;
+  return out;
 }
 
 Hdf5File Hdf5File::open_read(const fs::path& path) {
   silence_hdf5_errors();
   std::error_code ec;
   if (!fs::exists(path, ec)) throw FileError(fmt::format("{}: no such file", path.string()));
+  probe_hdf5_file(path);  // libhdf5 survives the file in a child process first
   Hdf5Handle fapl = file_access_list();
   Hdf5Handle file(H5Fopen(path.c_str(), H5F_ACC_RDONLY, fapl.get()));
   if (!file.valid()) fail(path.string(), "cannot open as an HDF5 file (damaged or not HDF5?)");
@@ -475,6 +485,7 @@ Hdf5File Hdf5File::open_in_memory(const fs::path& path) {
   silence_hdf5_errors();
   std::error_code ec;
   if (!fs::exists(path, ec)) throw FileError(fmt::format("{}: no such file", path.string()));
+  probe_hdf5_file(path);
   Hdf5Handle fapl = memory_access_list();
   Hdf5Handle file(H5Fopen(path.c_str(), H5F_ACC_RDWR, fapl.get()));
   if (!file.valid()) fail(path.string(), "cannot load the HDF5 file (damaged or not HDF5?)");
@@ -505,6 +516,7 @@ void Hdf5File::write_image(const fs::path& path) {
     done += static_cast<std::size_t>(n);
   }
   if (::close(fd) != 0) throw FileError(fmt::format("writing {} failed: {}", path.string(), std::strerror(errno)));
+  note_hdf5_file_written(path);
 }
 
 void Hdf5File::close() {
@@ -515,6 +527,7 @@ void Hdf5File::close() {
     fail(file_, "cannot write the file's data to disk");
   }
   if (H5Fclose(id) < 0) fail(file_, "closing the file failed");
+  if (written_here_) note_hdf5_file_written(file_);
 }
 
 }  // namespace trapdem

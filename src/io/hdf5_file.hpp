@@ -115,6 +115,7 @@ class Hdf5Group {
 class Hdf5File : public Hdf5Group {
  public:
   static Hdf5File create(const std::filesystem::path& path);           // truncates
+  // Both opens of an existing file check first that libhdf5 survives it (io/hdf5_probe).
   static Hdf5File open_read(const std::filesystem::path& path);
   // An empty file held in memory; `name` is what messages call it (normally the final path).
   static Hdf5File create_in_memory(const std::filesystem::path& name);
@@ -131,6 +132,7 @@ class Hdf5File : public Hdf5Group {
 
  private:
   using Hdf5Group::Hdf5Group;
+  bool written_here_ = false;  // created on disk by create(): close() notes it (io/hdf5_probe)
 };
 
 // Switches HDF5's automatic error printing off for this thread (idempotent).

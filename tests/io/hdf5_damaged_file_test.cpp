@@ -15,8 +15,11 @@
 #include <string>
 #include <vector>
 
+#include <sys/stat.h>
+
 #include "io/checkpoint.hpp"
 #include "io/hdf5_file.hpp"
+#include "io/hdf5_probe.hpp"
 #include "io/snapshot.hpp"
 #include "io_test_support.hpp"
 
@@ -45,11 +48,24 @@ std::size_t find(const std::vector<std::uint8_t>& bytes, const std::string& text
   return std::size_t(it - bytes.begin());
 }
 
-// Rewrites the file at `path` with `change` applied to its bytes.
+// Replaces the file at `path` with a copy with `change` applied to its bytes, written beside it and
+// renamed over it (as another program saves a file: a new inode, so that the probe does not take it
+// for the file this process wrote, io/hdf5_probe).
 void damage(const std::filesystem::path& path, const std::function<void(std::vector<std::uint8_t>&)>& change) {
   std::vector<std::uint8_t> bytes = bytes_of(path);
   change(bytes);
-  write_bytes(path, bytes);
+  const std::filesystem::path copy = path.string() + ".damaged";
+  write_bytes(copy, bytes);
+  std::filesystem::rename(copy, path);
+}
+
+// snapshots.h5 in `dir` with `count` snapshots of one particle (each in its own file, linked).
+std::filesystem::path snapshot_index(const ScratchDir& dir, int count) {
+  const auto path = dir / "snapshots.h5";
+  Particles p;
+  p.add(1, {0.001, 0.001, 0.001}, 0.001, 2500.0);
+  for (int k = 0; k < count; ++k) append_snapshot(path, make_snapshot(p, 0.1 * k, "pour", 0.001 * k, 10 * k));
+  return path;
 }
 
 // A file with a string attribute "stage" = `stage` on the root and a string dataset "names"; the
@@ -246,10 +262,7 @@ TEST(Hdf5DamagedFile, CheckpointWithZeroedHeapTailIsRefused) {
 // them through a name lookup first, which fails cleanly.
 TEST(Hdf5DamagedFile, SnapshotIndexWithDamagedLinkMessageIsRefused) {
   ScratchDir dir;
-  const auto path = dir / "snapshots.h5";
-  Particles p;
-  p.add(1, {0.001, 0.001, 0.001}, 0.001, 2500.0);
-  append_snapshot(path, make_snapshot(p, 0.0, "pour", 0.0, 0));
+  const auto path = snapshot_index(dir, 1);
   damage(path, [](std::vector<std::uint8_t>& bytes) {
     // The link message: version 1, flags 0x08 (a link type follows), type 64 (external), a name of 6.
     bytes.at(find(bytes, std::string("\x01\x08\x40\x06" "000000", 10)) + 1) = 0x7e;
@@ -257,6 +270,52 @@ TEST(Hdf5DamagedFile, SnapshotIndexWithDamagedLinkMessageIsRefused) {
   const std::string m = file_error_of([&] { list_snapshots(path); });
   EXPECT_NE(m.find(path.string() + ": /snapshots: cannot read the group's links (damaged link messages?)"),
             std::string::npos)
+      << m;
+}
+
+// The snapshot fuzz target's second crash (harden7's run): in snapshots.h5, the /snapshots group's
+// link-info message (type 2: version 0, flags 0, then the fractal heap's and the name index's
+// addresses, both "undefined", all bits set, as the links are messages in the header) with the
+// heap address's first byte changed, 0xff -> 0x43. The group then seems to keep its links in a
+// heap at an address near 2^64, and any access to it (H5Lexists, H5Literate, H5Gget_info) goes
+// H5G__obj_get_linfo -> H5B2_open -> H5F__accum_read, which copies from a null pointer: the
+// process dies of SIGSEGV (AddressSanitizer or not). No HDF5 call shows that address first, so
+// the readers let a child process meet the file first (io/hdf5_probe): its crash is a FileError
+// naming the file, where the child was, and the signal.
+TEST(Hdf5DamagedFile, LinkInfoWithAWildHeapAddressIsRefusedNotCrashedOn) {
+  ScratchDir dir;
+  const auto path = snapshot_index(dir, 2);
+  damage(path, [](std::vector<std::uint8_t>& bytes) {
+    // The message's header (type 2, size 24, flags 0, 3 reserved bytes) and its body up to the
+    // first address byte; the group is the file's only one whose links are messages.
+    std::vector<std::uint8_t> link_info = {0x02, 0x00, 0x18, 0x00, 0x00, 0x00, 0x00, 0x00, 0x00, 0x00};
+    link_info.resize(link_info.size() + 16, 0xff);
+    const auto at = std::search(bytes.begin(), bytes.end(), link_info.begin(), link_info.end());
+    ASSERT_NE(at, bytes.end());
+    ASSERT_EQ(std::search(at + 1, bytes.end(), link_info.begin(), link_info.end()), bytes.end())
+        << "a second link-info message";
+    at[10] = 0x43;
+  });
+  const std::string m = file_error_of([&] { list_snapshots(path); });
+  EXPECT_NE(m.find("libhdf5 crashed (signal 11: Segmentation fault) reading " + path.string() + ": /snapshots"),
+            std::string::npos)
+      << m;
+  EXPECT_NE(m.find("the file is damaged"), std::string::npos) << m;
+  const std::string again = file_error_of([&] { read_snapshots(path); });
+  EXPECT_NE(again.find("libhdf5 crashed"), std::string::npos) << again;
+}
+
+// A file whose reading never ends (here a named pipe nobody writes to: opening it blocks, as a
+// storage that does not answer or a libhdf5 loop would): the child is killed at the wall-clock
+// limit and the reader says so, instead of waiting for ever.
+TEST(Hdf5DamagedFile, AFileThatNeverAnswersIsRefusedAtTheTimeLimit) {
+  ScratchDir dir;
+  const auto path = dir / "checkpoint.h5";
+  ASSERT_EQ(::mkfifo(path.c_str(), 0600), 0);
+  set_hdf5_probe_limits({std::chrono::milliseconds(300), std::chrono::seconds(20), std::size_t(2) << 30});
+  const std::string m = file_error_of([&] { read_checkpoint(path); });
+  set_hdf5_probe_limits({});
+  EXPECT_NE(m.find("libhdf5 did not finish reading " + path.string() + " within 0.3 s (the limit)"), std::string::npos)
       << m;
 }
 
