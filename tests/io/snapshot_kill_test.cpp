@@ -51,6 +51,19 @@ bool temporary_of(const fs::path& dir, pid_t pid) {
   return false;
 }
 
+// Waits (up to ~60 s) until the live process `pid` is inside a write: a temporary of its own
+// exists. Entries come and go while it writes, so the walk tolerates them vanishing.
+bool wait_for_a_write(const fs::path& dir, pid_t pid) {
+  const std::string mark = ".tmp-" + std::to_string(pid) + "-";
+  for (int poll = 0; poll < 60000; ++poll) {
+    std::error_code ec;
+    for (fs::recursive_directory_iterator it(dir, ec), end; !ec && it != end; it.increment(ec))
+      if (it->path().filename().string().find(mark) != std::string::npos) return true;
+    ::usleep(1000);
+  }
+  return false;
+}
+
 }  // namespace
 
 TEST(SnapshotsAfterAKill, TheIndexStillOpensWithEveryEarlierSnapshot) {
@@ -69,10 +82,12 @@ TEST(SnapshotsAfterAKill, TheIndexStillOpensWithEveryEarlierSnapshot) {
       }
       ::_exit(3);
     }
-    // Varying moments, so that the kills fall in different phases of an append (the snapshot's
-    // own file, the index, the XDMF). Whether a kill fell inside a write is read from the
-    // temporaries it left, not from timing.
-    ::usleep(20000 + 25000 * attempt);
+    // The kill follows the child's first write by a varying delay (none on even attempts, which
+    // then land inside a write whatever the host's load; 5-35 ms on odd ones, which fall in other
+    // phases of an append: the snapshot's own file, the index, the XDMF, or between them). Whether
+    // a kill fell inside a write is read from the temporaries it left, not from timing.
+    ASSERT_TRUE(wait_for_a_write(dir.path(), child)) << "the child never started a write";
+    if (attempt % 2 == 1) ::usleep(5000 * attempt);
     ::kill(child, SIGKILL);
     int status = 0;
     ::waitpid(child, &status, 0);
