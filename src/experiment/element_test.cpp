@@ -173,7 +173,8 @@ ElementSpecimen prepare_specimen(const ElementSetup& setup, Packing packing, dou
   return sp;
 }
 
-SpecimenResult shear_specimen(ElementSpecimen& sp, const ElementSetup& setup, const ElementLog& log) {
+SpecimenResult shear_specimen(ElementSpecimen& sp, const ElementSetup& setup, const ElementLog& log,
+                              const ShearObserver& observe) {
   Simulation& sim = *sp.sim;
   const ElementSettings& e = setup.settings;
   const bool biaxial = e.kind == ElementTestKind::biaxial;
@@ -238,6 +239,7 @@ SpecimenResult shear_specimen(ElementSpecimen& sp, const ElementSetup& setup, co
     const std::vector<int> contacts = wall_contact_counts(sim);
     for (int a = 0; a < servo_axes; ++a) servo[a].update(sim, sp.box, a, contacts);
     const double eps_a = 1.0 - sp.box.length(sim, 2) / h0;
+    if (observe) observe(sim, sp.box, eps_a);
     sum.eps_a += eps_a;
     sum.eps_v += 1.0 - sp.box.volume(sim) / v0;
     sum.wall += wall_stress(sim, sp.box);

@@ -25,6 +25,9 @@ enum class Packing { dense, loose };
 const char* to_string(Packing packing);
 
 using ElementLog = std::function<void(const std::string&)>;
+// Called after every step of the shear with the specimen and its axial strain (tools and studies
+// that measure more than element.csv holds, e.g. the stress at several depths inside the walls).
+using ShearObserver = std::function<void(const Simulation&, const ElementBox&, double axial_strain)>;
 
 struct IsotropicState {
   double solid_fraction = 0.0;   // solid volume / box volume at the confining stress
@@ -91,7 +94,8 @@ struct ElementResult {
 
 // The stages, for tests and tools; run_element_test chains them.
 ElementSpecimen prepare_specimen(const ElementSetup& setup, Packing packing, double confining, const ElementLog& log = {});
-SpecimenResult shear_specimen(ElementSpecimen& specimen, const ElementSetup& setup, const ElementLog& log = {});
+SpecimenResult shear_specimen(ElementSpecimen& specimen, const ElementSetup& setup, const ElementLog& log = {},
+                              const ShearObserver& observe = {});
 ElementResult run_element_test(const ElementSetup& setup, const ElementLog& log = {});
 
 // Fills the angles of `result` from its rows: phi'_peak, phi'_cs (mean of sin_phi over the rows
