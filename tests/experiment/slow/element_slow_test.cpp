@@ -1,6 +1,6 @@
 // The virtual element test's physics at large strain (slow: a specimen of 4000 frictionless spheres
-// sheared slowly to 15 %, and five of 1000 frictional spheres to 25 % axial strain; about half an
-// hour with ctest -j2). In tests/experiment/slow: program test_experiment_slow, label slow,
+// sheared slowly to 15 % (15-35 minutes here, by the load), and five of 1000 frictional spheres to
+// 25 % axial strain; up to an hour with ctest -j2 on a loaded machine). In tests/experiment/slow: program test_experiment_slow, label slow,
 // excluded from `make test` and run by `make test-slow`.
 //
 // 1. Frictionless spheres still have a macroscopic friction: Peyneau & Roux (2008), "Frictionless
@@ -15,7 +15,7 @@
 //    sigma_3) (tan 5.76 deg and sin 5.76 deg differ by 0.0005), not with a triaxial test's angle
 //    (Lade-Duncan-like yield, Peyneau & Roux 2008b, PRE 78 041307); (b) their cells have no walls:
 //    ours has six flat frictionless ones, along which the spheres order in layers, and the stress
-//    ratio the walls measure is 0.03-0.04 above the contact stress of the interior three
+//    ratio the walls measure is 0.017-0.039 above the contact stress of the interior three
 //    diameters inside them (4000 spheres; docs/element.md). The interior's is the comparable one;
 //    (c) their value is the limit I -> 0, ours at I = 2.3e-4 carries a rate excess, bounded from
 //    our own rates. docs/element.md gives the runs behind the bands.
@@ -137,15 +137,17 @@ SteadyFriction frictionless_steady_state(int particles, double inertial, double 
 constexpr int kFrictionlessParticles = 4000;
 constexpr double kFrictionlessInertial = 2.5e-4;
 constexpr double kInteriorMargin = 3.0;  // mean diameters
-// Run-to-run scatter of the interior's mean sin phi at this size and rate (gas seeds, threads).
-constexpr double kRunScatter = 0.006;
+// Run-to-run standard deviation of the interior's mean sin phi at this size and rate: two gas
+// seeds gave 0.106 and 0.131 (block errors 0.003-0.004: a specimen's interior keeps its packing's
+// own strength over the strain averaged, so the block error understates the scatter).
+constexpr double kRunScatter = 0.018;
 // What the finite rate adds at I = 2.3e-4: the interior's sin phi fell by 0.016 from I = 4.6e-4
 // to 2.3e-4; the linear mu(I) (Jop et al. 2006) puts as much again above the limit. A slower
 // approach (mu - mu0 ~ I^alpha, alpha < 1) would put more, and the quasi-static limit lower.
 constexpr double kRateExcess = 0.016;
-// The walls' layers: interior - wall was -0.030 to -0.039 (+-0.006) over three rates at 4000
-// spheres; three standard errors around that range.
-constexpr double kLayerEffectMin = 0.012, kLayerEffectMax = 0.057;
+// The walls' layers: interior - wall was -0.017 to -0.039 (+-0.006) in every 4000-sphere run (two
+// seeds, three rates); two standard errors beyond that range.
+constexpr double kLayerEffectMin = 0.005, kLayerEffectMax = 0.06;
 
 TEST(ElementSlow, FrictionlessSpheresInteriorFrictionMatchesThePublishedQuasiStaticValue) {
   const double published = 0.100;  // mu* = sin phi' in the quasi-static limit (5.76 deg), see the top
@@ -154,13 +156,16 @@ TEST(ElementSlow, FrictionlessSpheresInteriorFrictionMatchesThePublishedQuasiSta
   EXPECT_LT(std::fabs(f.final_volumetric_strain), 0.01);
   EXPECT_LT(f.max_lateral_error, 0.01);
   // The comparable measure is the interior's: the published limit, plus what the rate adds,
-  // within three run-to-run standard deviations.
+  // within three run-to-run standard deviations. Wide ([0.046, 0.170]): one specimen of 4000
+  // spheres is; the walls' own value (0.145-0.148) lies inside, so the next check is what tells
+  // the two measures apart. It fails if the material's friction moves by ~0.05 or the interior
+  // measure breaks.
   EXPECT_GT(f.interior.mean, published - 3.0 * kRunScatter)
       << "interior sin phi " << f.interior.mean << " +- " << f.interior.error;
   EXPECT_LT(f.interior.mean, published + kRateExcess + 3.0 * kRunScatter)
       << "interior sin phi " << f.interior.mean << " +- " << f.interior.error;
   // The known discrepancy, stated: the stress ratio the walls measure includes the ordered layers
-  // along the six flat walls, which add 0.03-0.04 to sin phi (~2 deg) at this size.
+  // along the six flat walls, which add 0.017-0.039 to sin phi (1-2 deg) at this size.
   EXPECT_LT(f.difference.mean, -kLayerEffectMin) << "interior - wall sin phi";
   EXPECT_GT(f.difference.mean, -kLayerEffectMax) << "interior - wall sin phi";
 }
