@@ -99,12 +99,14 @@ int run_element(const ElementOptions& o) {
                   e.inertial_number),
       curves, {std::sin(15.7 * to_rad), std::sin(16.8 * to_rad)});
 
-  log(fmt::format("{:>14} {:>8} {:>10} {:>10} {:>10} {:>10} {:>10}", "confining", "packing", "solid fr.", "phi'_peak",
-                  "phi'_cs", "psi_peak", "LW/wall"));
+  // "cs inside": phi'_cs from the contact stress of the interior (element.interior_margin inside
+  // every wall), without the walls' layers (docs/element.md).
+  log(fmt::format("{:>14} {:>8} {:>10} {:>10} {:>10} {:>10} {:>10} {:>10}", "confining", "packing", "solid fr.",
+                  "phi'_peak", "phi'_cs", "cs inside", "psi_peak", "LW/wall"));
   for (const SpecimenResult& s : result.specimens)
-    log(fmt::format("{:>10.4g} kPa {:>8} {:>10.4f} {:>10.1f} {:>10.1f} {:>10.1f} {:>10.4f}", s.confining / 1e3,
-                    to_string(s.packing), s.isotropic.solid_fraction, s.phi_peak, s.phi_cs, s.psi_peak,
-                    s.isotropic.love_weber_mean() / s.isotropic.wall_mean()));
+    log(fmt::format("{:>10.4g} kPa {:>8} {:>10.4f} {:>10.1f} {:>10.1f} {:>10.1f} {:>10.1f} {:>10.4f}", s.confining / 1e3,
+                    to_string(s.packing), s.isotropic.solid_fraction, s.phi_peak, s.phi_cs, s.phi_cs_interior,
+                    s.psi_peak, s.isotropic.love_weber_mean() / s.isotropic.wall_mean()));
   for (const ElementAngles& a : element_angles(result))
     log(fmt::format("at {:.4g} kPa: phi'_peak {:.1f} deg, phi'_cs {:.1f} deg (dense and loose {:.1f} deg apart)",
                     a.confining / 1e3, a.phi_peak, a.phi_cs, a.phi_cs_gap));

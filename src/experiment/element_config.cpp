@@ -34,6 +34,7 @@ ElementSetup read_element_setup(Config& c) {
     throw t.error("row_strain", fmt::format("at most a quarter of critical_state_window ({}): phi'_cs averages rows",
                                             e.critical_state_window));
   e.gas_solid_fraction = t.get_double("gas_solid_fraction", e.gas_solid_fraction, "", Range::open_closed(0.0, 0.35));
+  e.interior_margin = t.get_double("interior_margin", e.interior_margin, "mean diameters", Range::non_negative());
   e.seed = static_cast<std::uint64_t>(t.get_int("seed", 1, Range::non_negative()));
 
   if (!c.is_table("particles"))

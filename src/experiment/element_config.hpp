@@ -35,6 +35,9 @@ struct ElementSettings {
   double row_strain = 0.0025;              // axial strain between rows of element.csv (each row an average)
   double critical_state_window = 0.05;     // phi'_cs: the mean over the last this much axial strain
   double gas_solid_fraction = 0.30;        // the random gas the specimen is compressed from
+  // The interior whose contact stress element.csv also gives: the box less this many mean
+  // diameters along every wall (docs/element.md: the walls' layers).
+  double interior_margin = 2.0;
   std::uint64_t seed = 1;                  // placement of the gas (dense and loose share it)
 };
 

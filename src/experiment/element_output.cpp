@@ -47,16 +47,18 @@ std::string element_csv(const ElementResult& result) {
   std::string out =
       "packing,confining_Pa,axial_strain,deviator_Pa,mean_stress_Pa,stress_ratio_q_over_p,sin_phi_mobilised,"
       "volumetric_strain,coordination_number,inertial_number,wall_sxx_Pa,wall_syy_Pa,wall_szz_Pa,contact_sxx_Pa,"
-      "contact_syy_Pa,contact_szz_Pa,contact_mean_stress_Pa\n";
+      "contact_syy_Pa,contact_szz_Pa,contact_mean_stress_Pa,interior_sxx_Pa,interior_syy_Pa,interior_szz_Pa,"
+      "interior_sin_phi\n";
   for (const SpecimenResult& s : result.specimens) {
     for (const ElementRow& r : s.rows) {
       const double lw_mean = (r.love_weber_stress.x + r.love_weber_stress.y + r.love_weber_stress.z) / 3.0;
       out += fmt::format("{},{:.6g},{:.6g},{:.6g},{:.6g},{:.6g},{:.6g},{:.6g},{:.4f},{:.4g},{:.6g},{:.6g},{:.6g},{:.6g},"
-                         "{:.6g},{:.6g},{:.6g}\n",
+                         "{:.6g},{:.6g},{:.6g},{:.6g},{:.6g},{:.6g},{:.6g}\n",
                          to_string(s.packing), s.confining, r.axial_strain, r.deviator, r.mean_stress,
                          r.deviator / r.mean_stress, r.sin_phi, r.volumetric_strain, r.coordination,
                          r.inertial_number, r.wall_stress.x, r.wall_stress.y, r.wall_stress.z,
-                         r.love_weber_stress.x, r.love_weber_stress.y, r.love_weber_stress.z, lw_mean);
+                         r.love_weber_stress.x, r.love_weber_stress.y, r.love_weber_stress.z, lw_mean,
+                         r.interior_stress.x, r.interior_stress.y, r.interior_stress.z, r.interior_sin_phi);
     }
   }
   return out;
@@ -73,6 +75,7 @@ std::string element_json(const ElementResult& result) {
   out += fmt::format("  \"inertial_number\": {},\n", number(e.inertial_number));
   out += fmt::format("  \"max_axial_strain\": {},\n", number(e.max_axial_strain));
   out += fmt::format("  \"critical_state_window\": {},\n", number(e.critical_state_window));
+  out += fmt::format("  \"interior_margin_diameters\": {},\n", number(e.interior_margin));
   out += "  \"angles\": [";
   const std::vector<ElementAngles> angles = element_angles(result);
   for (std::size_t k = 0; k < angles.size(); ++k) {
@@ -103,6 +106,7 @@ std::string element_json(const ElementResult& result) {
     out += fmt::format("      \"axial_strain_at_peak\": {},\n", number(s.axial_strain_at_peak));
     out += fmt::format("      \"phi_cs_deg\": {},\n", number(s.phi_cs));
     out += fmt::format("      \"phi_cs_scatter_deg\": {},\n", number(s.phi_cs_scatter));
+    out += fmt::format("      \"phi_cs_interior_deg\": {},\n", number(s.phi_cs_interior));
     out += fmt::format("      \"dilatancy_angle_at_peak_deg\": {},\n", number(s.psi_peak));
     out += fmt::format("      \"max_lateral_stress_error\": {},\n", number(s.max_lateral_error));
     const ElementRow* last = s.rows.empty() ? nullptr : &s.rows.back();

@@ -1,5 +1,9 @@
 #include "experiment/element_stress.hpp"
 
+#include <fmt/format.h>
+
+#include "core/errors.hpp"
+#include "dem/contact/law.hpp"
 #include "dem/wall.hpp"
 
 namespace trapdem {
@@ -41,6 +45,54 @@ Stress3 love_weber_stress(const Simulation& sim, const ElementBox& box) {
   const double v = box.volume(sim);
   for (auto& row : s)
     for (double& x : row) x /= v;
+  return s;
+}
+
+Stress3 interior_contact_stress(const Simulation& sim, const ElementBox& box, double margin) {
+  Vec3 lo, hi;
+  double volume = 1.0;
+  for (int a = 0; a < 3; ++a) {
+    lo[a] = sim.walls()[box.wall[a][0]].origin[a] + margin;
+    hi[a] = sim.walls()[box.wall[a][1]].origin[a] - margin;
+    if (!(hi[a] > lo[a]))
+      throw SimulationError(fmt::format("element test: an interior {} m inside the walls leaves nothing of the {:.4g} m "
+                                        "wide box on axis {}: lower the margin or enlarge the specimen",
+                                        margin, box.length(sim, a), "xyz"[a]));
+    volume *= hi[a] - lo[a];
+  }
+  const Particles& p = sim.particles();
+  const ContactLaw& law = sim.particle_law();
+  const LawParams params = law_params(law, law);
+  const Domain& domain = sim.settings().domain;
+  const PairList pairs = sim.pairs();
+  Stress3 s{};
+  for (std::size_t i = 0; i + 1 < pairs.first.size(); ++i) {
+    for (std::uint32_t k = pairs.first[i]; k < pairs.first[i + 1]; ++k) {
+      const std::uint32_t j = pairs.partner[k];
+      const Vec3 branch = domain.minimum_image(p.position[i] - p.position[j]);  // from j to i
+      const double distance = norm(branch);
+      const double overlap = p.radius[i] + p.radius[j] - distance;
+      if (!(overlap > 0.0)) continue;
+      const Vec3 n = branch / distance;
+      const Vec3 point = p.position[i] - (p.radius[i] - 0.5 * overlap) * n;
+      bool inside = true;
+      for (int a = 0; a < 3; ++a) inside = inside && point[a] >= lo[a] && point[a] < hi[a];
+      if (!inside) continue;
+      const double effective_radius = p.radius[i] * p.radius[j] / (p.radius[i] + p.radius[j]);
+      const NormalResponse r = NormalModels::visit(law.normal_model, [&](auto model) {
+        using Model = decltype(model);
+        return Model::respond(static_cast<const typename Model::Params&>(params.normal), overlap, effective_radius);
+      });
+      const double effective_mass = p.mass[i] * p.mass[j] / (p.mass[i] + p.mass[j]);
+      const double c_n = RestitutionDamping::normal_coefficient(params.damping, effective_mass, r.damping_stiffness);
+      const double fn = r.elastic_force - c_n * dot(p.velocity[i] - p.velocity[j], n);
+      const Vec3 f = fn * n - r.tangential_stiffness * pairs.history[k].tangential_spring;
+      for (int a = 0; a < 3; ++a)
+        for (int b = 0; b < 3; ++b) s[a][b] += f[a] * branch[b];
+    }
+  }
+  for (auto& row : s)
+    for (double& x : row) x /= volume;
   return s;
 }
 

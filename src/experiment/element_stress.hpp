@@ -39,4 +39,17 @@ double wall_normal_stress(const Simulation& sim, const ElementBox& box, int axis
 // The Love-Weber stress tensor over the box volume (Pa, compression positive), of the last step's forces.
 Stress3 love_weber_stress(const Simulation& sim, const ElementBox& box);
 
+// The contact stress of the specimen's interior (Pa, compression positive): Love's sum over the
+// particle pairs whose contact point lies in the sub-box `margin` (m) inside every wall,
+//   sigma V_in = sum_{c in V_in} f_ij (x) (x_i - x_j),
+// over its volume V_in. It leaves out the layers along the walls (ordered, looser: docs/element.md),
+// which the wall stress and the whole-box sum include. A contact's force is recomputed from the
+// pair's geometry and history with the particles' law: the normal model's elastic force less the
+// normal dashpot, plus the tangential spring's force -k_t s (its dashpot, ~c_t |v_t| against
+// k_t |s|, left out: a relative error of the order of the inertial number). The pairs straddling
+// the sub-box's faces are counted whole when their contact point is in: a surface error of the
+// order d / L_in in both the normal and the shear components alike (the stress ratio keeps it to
+// second order). `margin` must leave an interior: throws SimulationError otherwise.
+Stress3 interior_contact_stress(const Simulation& sim, const ElementBox& box, double margin);
+
 }  // namespace trapdem

@@ -24,6 +24,9 @@ constexpr double kStressTolerance = 0.005;
 constexpr double kRestFraction = 1.0;
 constexpr int kWindowSteps = 500;        // steps of an equilibrium check window
 constexpr int kStressSampleEvery = 10;   // steps between Love-Weber and coordination samples
+// Steps between samples of the interior's stress: it copies the pair list (Simulation::pairs), a
+// few times a step's own cost; every 50 steps is still ~40 samples in a row at I = 2e-3.
+constexpr int kInteriorSampleEvery = 50;
 constexpr double kRampStrain = 0.001;    // axial strain over which the shear's wall speed is reached
 
 SimulationSettings simulation_settings(const ElementSetup& setup, double side) {
@@ -170,7 +173,8 @@ ElementSpecimen prepare_specimen(const ElementSetup& setup, Packing packing, dou
   return sp;
 }
 
-SpecimenResult shear_specimen(ElementSpecimen& sp, const ElementSetup& setup, const ElementLog& log) {
+SpecimenResult shear_specimen(ElementSpecimen& sp, const ElementSetup& setup, const ElementLog& log,
+                              const ShearObserver& observe) {
   Simulation& sim = *sp.sim;
   const ElementSettings& e = setup.settings;
   const bool biaxial = e.kind == ElementTestKind::biaxial;
@@ -212,9 +216,16 @@ SpecimenResult shear_specimen(ElementSpecimen& sp, const ElementSetup& setup, co
   // Row accumulators.
   struct Sum {
     double eps_a = 0, eps_v = 0, z = 0;
-    Vec3 wall, lw;
-    int n = 0, n_sampled = 0;
+    Vec3 wall, lw, interior;
+    int n = 0, n_sampled = 0, n_interior = 0;
   } sum;
+  const double interior_margin = e.interior_margin * setup.material.sizes.mean_diameter();
+  // An interior at least a mean diameter wide on every axis; a smaller specimen's rows give NaN.
+  auto interior_fits = [&] {
+    for (int a = 0; a < 3; ++a)
+      if (sp.box.length(sim, a) < 2.0 * interior_margin + d) return false;
+    return true;
+  };
   double next_row = e.row_strain;
   const double t0 = sim.time();
   bool ramping = true;
@@ -228,6 +239,7 @@ SpecimenResult shear_specimen(ElementSpecimen& sp, const ElementSetup& setup, co
     const std::vector<int> contacts = wall_contact_counts(sim);
     for (int a = 0; a < servo_axes; ++a) servo[a].update(sim, sp.box, a, contacts);
     const double eps_a = 1.0 - sp.box.length(sim, 2) / h0;
+    if (observe) observe(sim, sp.box, eps_a);
     sum.eps_a += eps_a;
     sum.eps_v += 1.0 - sp.box.volume(sim) / v0;
     sum.wall += wall_stress(sim, sp.box);
@@ -236,6 +248,10 @@ SpecimenResult shear_specimen(ElementSpecimen& sp, const ElementSetup& setup, co
       sum.lw += diagonal(love_weber_stress(sim, sp.box));
       sum.z += coordination_number(sim);
       ++sum.n_sampled;
+    }
+    if (step % kInteriorSampleEvery == 0 && interior_fits()) {
+      sum.interior += diagonal(interior_contact_stress(sim, sp.box, interior_margin));
+      ++sum.n_interior;
     }
     const bool last = step + 1 == total_steps || eps_a >= e.max_axial_strain;
     if (eps_a >= next_row || last) {
@@ -250,6 +266,15 @@ SpecimenResult shear_specimen(ElementSpecimen& sp, const ElementSetup& setup, co
       row.deviator = axial - lateral;
       row.mean_stress = (row.wall_stress.x + row.wall_stress.y + row.wall_stress.z) / 3.0;
       row.sin_phi = (axial - lateral) / (axial + lateral);
+      row.interior_stress = Vec3{NAN, NAN, NAN};
+      row.interior_sin_phi = NAN;
+      if (sum.n_interior > 0) {
+        row.interior_stress = sum.interior / sum.n_interior;
+        const double in_axial = row.interior_stress.z;
+        const double in_lateral =
+            biaxial ? row.interior_stress.x : 0.5 * (row.interior_stress.x + row.interior_stress.y);
+        row.interior_sin_phi = (in_axial - in_lateral) / (in_axial + in_lateral);
+      }
       row.inertial_number = r.strain_rate * d / std::sqrt(std::max(row.mean_stress, 1e-300) / setup.material.density);
       for (int a = 0; a < servo_axes; ++a)
         row.lateral_error = std::max(row.lateral_error, std::fabs(row.wall_stress[a] - sp.confining) / sp.confining);
@@ -286,14 +311,16 @@ void summarise_specimen(SpecimenResult& r, double window) {
   r.axial_strain_at_peak = r.rows[peak].axial_strain;
 
   const double end = r.rows.back().axial_strain;
-  double s_sum = 0.0;
+  double s_sum = 0.0, interior_sum = 0.0;
   std::vector<double> angles;
   for (const ElementRow& row : r.rows) {
     if (row.axial_strain < end - window) continue;
     s_sum += row.sin_phi;
+    interior_sum += row.interior_sin_phi;
     angles.push_back(angle(row.sin_phi));
   }
   r.phi_cs = angle(s_sum / double(angles.size()));
+  r.phi_cs_interior = angle(interior_sum / double(angles.size()));
   double m = 0.0, m2 = 0.0;
   for (double a : angles) m += a;
   m /= double(angles.size());

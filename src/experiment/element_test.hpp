@@ -25,6 +25,9 @@ enum class Packing { dense, loose };
 const char* to_string(Packing packing);
 
 using ElementLog = std::function<void(const std::string&)>;
+// Called after every step of the shear with the specimen and its axial strain (tools and studies
+// that measure more than element.csv holds, e.g. the stress at several depths inside the walls).
+using ShearObserver = std::function<void(const Simulation&, const ElementBox&, double axial_strain)>;
 
 struct IsotropicState {
   double solid_fraction = 0.0;   // solid volume / box volume at the confining stress
@@ -59,6 +62,10 @@ struct ElementRow {
   double coordination = 0.0;       // 2 (touching particle pairs) / particles
   double inertial_number = 0.0;    // eps_dot d_mean / sqrt(mean_stress / rho_s)
   double lateral_error = 0.0;      // largest |sigma_lateral - target| / target over the servo axes
+  // The contact stress of the interior (ElementSettings::interior_margin from every wall;
+  // interior_contact_stress) and the sin phi it gives, the walls' layers left out.
+  Vec3 interior_stress;            // Pa, diagonal
+  double interior_sin_phi = 0.0;
 };
 
 struct SpecimenResult {
@@ -72,6 +79,7 @@ struct SpecimenResult {
   double axial_strain_at_peak = 0.0;
   double phi_cs = 0.0;             // degrees, asin of the mean sin_phi over the last critical_state_window
   double phi_cs_scatter = 0.0;     // degrees, standard deviation of the rows' angles over that window
+  double phi_cs_interior = 0.0;    // degrees, as phi_cs from the interior's contact stress
   double psi_peak = 0.0;           // degrees, dilatancy angle at the peak (positive: dilating)
   double max_lateral_error = 0.0;  // over the rows
 };
@@ -86,7 +94,8 @@ struct ElementResult {
 
 // The stages, for tests and tools; run_element_test chains them.
 ElementSpecimen prepare_specimen(const ElementSetup& setup, Packing packing, double confining, const ElementLog& log = {});
-SpecimenResult shear_specimen(ElementSpecimen& specimen, const ElementSetup& setup, const ElementLog& log = {});
+SpecimenResult shear_specimen(ElementSpecimen& specimen, const ElementSetup& setup, const ElementLog& log = {},
+                              const ShearObserver& observe = {});
 ElementResult run_element_test(const ElementSetup& setup, const ElementLog& log = {});
 
 // Fills the angles of `result` from its rows: phi'_peak, phi'_cs (mean of sin_phi over the rows

@@ -11,6 +11,7 @@
 #include <omp.h>
 
 #include "core/errors.hpp"
+#include "dem/wall.hpp"
 #include "element_test_config.hpp"
 #include "experiment/element_config.hpp"
 #include "experiment/element_servo.hpp"
@@ -144,6 +145,41 @@ TEST_F(ElementSpecimenTest, LoveWeberStressEqualsTheWallStressInTheIsotropicStat
   // 6-7 diameters wide (0.56 measured).
   EXPECT_GT(iso.solid_fraction, 0.54);
   EXPECT_LT(iso.solid_fraction, 0.66);
+}
+
+// The interior's contact stress recomputes each pair's force from its overlap, velocities and
+// tangential spring (element_stress.hpp). With no margin every pair's contact point is inside, so
+// it must equal the whole box's Love-Weber sum, whose pair part comes from the engine's own forces,
+// less the wall contacts' part: the same tensor, shear components included, to the omitted
+// tangential dashpot (the specimen is at rest: 0.4 Pa of 50 kPa measured, 5 Pa asked). A sign slip in the tangential spring
+// (the specimen has mu = 0.3 and carries tangential forces) or in the branch vector breaks it.
+TEST_F(ElementSpecimenTest, InteriorContactStressIsThePairPartOfTheLoveWeberSumWithoutAMargin) {
+  const Simulation& sim = *specimen_->sim;
+  const ElementBox& box = specimen_->box;
+  const Stress3 whole = love_weber_stress(sim, box);
+  const Stress3 pairs = interior_contact_stress(sim, box, 0.0);
+  // The wall contacts' part: f_iw (x) (x_i - c_iw) over the box volume (element_stress.hpp).
+  Stress3 walls{};
+  const WallList& wl = sim.wall_candidates();
+  const Particles& p = sim.particles();
+  for (std::size_t i = 0; i < p.size(); ++i)
+    for (std::uint32_t k = wl.first[i]; k < wl.first[i + 1]; ++k) {
+      const Vec3 arm = p.position[i] - wall_proximity(sim.walls()[wl.wall[k]], p.position[i]).point;
+      for (int a = 0; a < 3; ++a)
+        for (int b = 0; b < 3; ++b) walls[a][b] += wl.force[k][a] * arm[b] / box.volume(sim);
+    }
+  for (int a = 0; a < 3; ++a)
+    for (int b = 0; b < 3; ++b) {
+      EXPECT_NEAR(pairs[a][b] + walls[a][b], whole[a][b], 1e-4 * 50e3) << "component " << a << b;
+    }
+  // The pairs carry most of the stress (the walls' part is the layer along them).
+  EXPECT_GT(pairs[0][0], 0.5 * whole[0][0]);
+  // An interior one diameter inside every wall is still at the confining stress, isotropically,
+  // within the fluctuation of so small a sample (~100 spheres' contacts).
+  const Stress3 inner = interior_contact_stress(sim, box, setup_->material.sizes.mean_diameter());
+  for (int a = 0; a < 3; ++a) EXPECT_NEAR(inner[a][a] / 50e3, 1.0, 0.15) << "axis " << a;
+  // No interior left: refused with a message naming the axis.
+  EXPECT_THROW(interior_contact_stress(sim, box, box.length(sim, 0)), SimulationError);
 }
 
 TEST_F(ElementSpecimenTest, ServoHoldsTheLateralStressAfterTheIsotropicStageAndDuringShear) {

@@ -1,19 +1,24 @@
-// The virtual element test's physics at large strain (slow: specimens of 1000 spheres sheared to
-// 15-25 % axial strain; about a quarter of an hour with ctest -j2). In tests/experiment/slow: program
-// test_experiment_slow, label slow, excluded from `make test` and run by `make test-slow`.
+// The virtual element test's physics at large strain (slow: a specimen of 4000 frictionless spheres
+// sheared slowly to 15 % (15-35 minutes here, by the load), and five of 1000 frictional spheres to
+// 25 % axial strain; up to an hour with ctest -j2 on a loaded machine). In tests/experiment/slow: program test_experiment_slow, label slow,
+// excluded from `make test` and run by `make test-slow`.
 //
 // 1. Frictionless spheres still have a macroscopic friction: Peyneau & Roux (2008), "Frictionless
 //    bead packs have macroscopic friction, but no dilatancy", Phys. Rev. E 78, 011307, find an
 //    internal friction angle of 5.76 deg (friction coefficient mu* = tau / sigma_n ~ 0.100) for
-//    nearly rigid frictionless beads in simple shear in the quasi-static limit, no dilatancy, and
-//    mu* rising as a power of the inertial number I. What is comparable: (a) simple shear and the
-//    biaxial test are both plane strain, and with coaxial stress and strain rate and no dilatancy
-//    (psi = 0) the shear plane is a plane of zero extension, on which tau / sigma_n =
-//    sin phi cos psi / (1 - sin phi sin psi) = sin phi (Davis 1968): so mu* is compared with the
-//    biaxial test's sin phi' = (sigma_1 - sigma_3) / (sigma_1 + sigma_3), not with tan phi' nor with
-//    a triaxial test's angle (Lade-Duncan-like yield, Peyneau & Roux 2008b, PRE 78 041307);
-//    (b) their value is the limit I -> 0, ours are at finite I: the test shears at two rates and
-//    extrapolates. docs/element.md gives the runs behind the tolerances.
+//    nearly rigid frictionless beads in simple shear in the quasi-static limit, in periodic cells
+//    (no walls), no dilatancy, and mu* rising as a power of the inertial number I. What is
+//    comparable: (a) simple shear and the biaxial test are both plane strain, and with coaxial
+//    stress and strain rate and no dilatancy (psi = 0) the shear plane is a plane of zero
+//    extension, on which tau / sigma_n = sin phi cos psi / (1 - sin phi sin psi) = sin phi (Davis
+//    1968): so mu* is compared with the biaxial test's sin phi' = (sigma_1 - sigma_3) / (sigma_1 +
+//    sigma_3) (tan 5.76 deg and sin 5.76 deg differ by 0.0005), not with a triaxial test's angle
+//    (Lade-Duncan-like yield, Peyneau & Roux 2008b, PRE 78 041307); (b) their cells have no walls:
+//    ours has six flat frictionless ones, along which the spheres order in layers, and the stress
+//    ratio the walls measure is 0.017-0.039 above the contact stress of the interior three
+//    diameters inside them (4000 spheres; docs/element.md). The interior's is the comparable one;
+//    (c) their value is the limit I -> 0, ours at I = 2.3e-4 carries a rate excess, bounded from
+//    our own rates. docs/element.md gives the runs behind the bands.
 // 2. The critical-state angle grows with the sliding friction mu (0.05, 0.15, 0.3; no rolling
 //    resistance; above ~0.3 it saturates) and with the rolling resistance mu_r at mu = 0.3 (0, 0.1,
 //    0.3): each step by more than the rows' scatter of phi'_cs over the last 5 % of strain. Goncu & Luding (2013, Acta
@@ -65,79 +70,104 @@ const SpecimenResult& loose_critical_state(double mu, double mu_r) {
   return it->second;
 }
 
-// The frictionless loose specimen (1000 spheres) sheared to 15 % at inertial number `inertial`:
-// mean sin phi over rows 5-15 % (the frictionless specimens reach their steady state by 3-4 %) and
-// its standard error from the means of four blocks of consecutive rows (the rows are correlated
-// over about 1 %: their own standard deviation, ~0.025, would understate the error).
+// The frictionless loose specimen sheared to 15 % at inertial number `inertial`, over the rows
+// from 5 to 15 % (the frictionless specimens reach their steady state by 3-4 %): the mean sin phi
+// from the walls and from the contacts of the interior `margin` mean diameters inside every wall
+// (interior_contact_stress), and their difference, each with its standard error from the means of
+// four blocks of consecutive rows (the rows are correlated over about 1 % of strain: their own
+// standard deviation, ~0.025, would understate the error).
+struct Estimate {
+  double mean = 0.0, error = 0.0;
+};
 struct SteadyFriction {
-  double sin_phi = 0.0, error = 0.0, inertial = 0.0, final_volumetric_strain = 0.0, max_lateral_error = 0.0;
+  Estimate wall, interior, difference;  // difference: interior - wall, row by row
+  double inertial = 0.0, final_volumetric_strain = 0.0, max_lateral_error = 0.0;
 };
 
-SteadyFriction frictionless_steady_state(double inertial) {
+Estimate block_estimate(const std::vector<double>& x) {
+  const std::size_t n = x.size(), block = n / 4;
+  Estimate e;
+  double blocks[4] = {};
+  for (std::size_t k = 0; k < n; ++k) e.mean += x[k] / double(n);
+  for (int b = 0; b < 4; ++b)
+    for (std::size_t k = b * block; k < (b + 1) * block; ++k) blocks[b] += x[k] / double(block);
+  const double block_mean = (blocks[0] + blocks[1] + blocks[2] + blocks[3]) / 4.0;
+  double v = 0.0;
+  for (double b : blocks) v += (b - block_mean) * (b - block_mean);
+  e.error = std::sqrt(v / 3.0 / 4.0);
+  return e;
+}
+
+SteadyFriction frictionless_steady_state(int particles, double inertial, double margin) {
   const std::string text = element_test_config("element-frictionless", 0.0, 0.0) +
-                           fmt::format("particles = 1000\nmax_axial_strain = 0.15\ncritical_state_window = 0.10\n"
-                                       "inertial_number = {}\n",
-                                       inertial);
+                           fmt::format("particles = {}\nmax_axial_strain = 0.15\ncritical_state_window = 0.10\n"
+                                       "inertial_number = {}\ninterior_margin = {}\n",
+                                       particles, inertial, margin);
   Config c = Config::parse(text, "element-frictionless.toml");
   const ElementSetup setup = read_element_setup(c);
   ElementSpecimen sp = prepare_specimen(setup, Packing::loose, 50e3);
   const SpecimenResult r = shear_specimen(sp, setup);
-  std::vector<double> window;
+  std::vector<double> wall, interior, difference;
   double inertial_sum = 0.0;
   for (const ElementRow& row : r.rows)
     if (row.axial_strain >= 0.05) {
-      window.push_back(row.sin_phi);
+      wall.push_back(row.sin_phi);
+      interior.push_back(row.interior_sin_phi);
+      difference.push_back(row.interior_sin_phi - row.sin_phi);
       inertial_sum += row.inertial_number;
     }
   SteadyFriction f;
-  const std::size_t n = window.size(), block = n / 4;
-  double mean = 0.0, blocks[4] = {};
-  for (std::size_t k = 0; k < n; ++k) mean += window[k] / double(n);
-  for (int b = 0; b < 4; ++b) {
-    for (std::size_t k = b * block; k < (b + 1) * block; ++k) blocks[b] += window[k] / double(block);
-  }
-  const double block_mean = (blocks[0] + blocks[1] + blocks[2] + blocks[3]) / 4.0;
-  double v = 0.0;
-  for (double x : blocks) v += (x - block_mean) * (x - block_mean);
-  f.sin_phi = mean;
-  f.error = std::sqrt(v / 3.0 / 4.0);
-  f.inertial = inertial_sum / double(n);  // at the mean stress of the rows
+  f.wall = block_estimate(wall);
+  f.interior = block_estimate(interior);
+  f.difference = block_estimate(difference);
+  f.inertial = inertial_sum / double(wall.size());  // at the mean stress of the rows
   f.final_volumetric_strain = r.rows.back().volumetric_strain;
   f.max_lateral_error = r.max_lateral_error;
-  std::fprintf(stderr, "frictionless, I %.3g: sin phi %.4f +- %.4f (%.2f deg), final eps_v %.4f, lateral within %.4f\n",
-               f.inertial, f.sin_phi, f.error, std::asin(f.sin_phi) * 180.0 / std::numbers::pi,
+  std::fprintf(stderr,
+               "frictionless, %d spheres, I %.3g: sin phi from the walls %.4f +- %.4f, interior (%.1f d) %.4f +- %.4f "
+               "(%.2f deg), difference %.4f +- %.4f, final eps_v %.4f, lateral within %.4f\n",
+               particles, f.inertial, f.wall.mean, f.wall.error, margin, f.interior.mean, f.interior.error,
+               std::asin(f.interior.mean) * 180.0 / std::numbers::pi, f.difference.mean, f.difference.error,
                f.final_volumetric_strain, f.max_lateral_error);
   return f;
 }
 
-TEST(ElementSlow, FrictionlessSpheresApproachThePublishedQuasiStaticFriction) {
+// The specimen and the bands, from the runs in docs/element.md ("Frictionless spheres"): 4000
+// spheres, the interior 3 d inside every wall (~9 d across, a fifth of the box), I = 2.5e-4.
+constexpr int kFrictionlessParticles = 4000;
+constexpr double kFrictionlessInertial = 2.5e-4;
+constexpr double kInteriorMargin = 3.0;  // mean diameters
+// Run-to-run standard deviation of the interior's mean sin phi at this size and rate: two gas
+// seeds gave 0.106 and 0.131 (block errors 0.003-0.004: a specimen's interior keeps its packing's
+// own strength over the strain averaged, so the block error understates the scatter).
+constexpr double kRunScatter = 0.018;
+// What the finite rate adds at I = 2.3e-4: the interior's sin phi fell by 0.016 from I = 4.6e-4
+// to 2.3e-4; the linear mu(I) (Jop et al. 2006) puts as much again above the limit. A slower
+// approach (mu - mu0 ~ I^alpha, alpha < 1) would put more, and the quasi-static limit lower.
+constexpr double kRateExcess = 0.016;
+// The walls' layers: interior - wall was -0.017 to -0.039 (+-0.006) in every 4000-sphere run (two
+// seeds, three rates); two standard errors beyond that range.
+constexpr double kLayerEffectMin = 0.005, kLayerEffectMax = 0.06;
+
+TEST(ElementSlow, FrictionlessSpheresInteriorFrictionMatchesThePublishedQuasiStaticValue) {
   const double published = 0.100;  // mu* = sin phi' in the quasi-static limit (5.76 deg), see the top
-  const SteadyFriction fast = frictionless_steady_state(1e-3);
-  const SteadyFriction slow = frictionless_steady_state(2.5e-4);
-  for (const SteadyFriction& f : {fast, slow}) {
-    // No dilatancy: the volume stays within a few tenths of a per cent (docs/element.md: |eps_v| <= 0.6 %).
-    EXPECT_LT(std::fabs(f.final_volumetric_strain), 0.01);
-    EXPECT_LT(f.max_lateral_error, 0.01);
-  }
-  // The rate adds friction: the slower shear is not stronger beyond the noise.
-  const double noise = std::hypot(fast.error, slow.error);
-  EXPECT_LT(slow.sin_phi, fast.sin_phi + 2.0 * noise);
-  // The limit I -> 0 of mu(I) = mu0 + a I^alpha through the two rates. Four rates (2e-3 to 2.5e-4,
-  // docs/element.md) do not fix alpha: 0.25 to 1 fit alike (chi^2 0.43-0.71 for 2 degrees of
-  // freedom). So the published limit must lie within two standard errors of the extrapolation for
-  // some alpha in that range. A consistency check, and a weak one: the extrapolation multiplies the
-  // noise by 1 / (1 - r) (3.4 at alpha = 0.25), so it fails only when both rates give about the
-  // same friction above ~0.19 (the rate then not what separates us from the published value).
-  bool consistent = false;
-  std::string tried;
-  for (double alpha : {0.25, 0.4, 0.5, 0.75, 1.0}) {
-    const double r = std::pow(slow.inertial / fast.inertial, alpha);
-    const double mu0 = (slow.sin_phi - r * fast.sin_phi) / (1.0 - r);
-    const double error = std::hypot(slow.error, r * fast.error) / (1.0 - r);
-    consistent = consistent || std::fabs(mu0 - published) < 2.0 * error;
-    tried += fmt::format(" alpha {}: {:.3f} +- {:.3f};", alpha, mu0, error);
-  }
-  EXPECT_TRUE(consistent) << "extrapolated sin phi' at I -> 0:" << tried << " published " << published;
+  const SteadyFriction f = frictionless_steady_state(kFrictionlessParticles, kFrictionlessInertial, kInteriorMargin);
+  // No dilatancy: the volume stays within a few tenths of a per cent (docs/element.md: |eps_v| <= 0.6 %).
+  EXPECT_LT(std::fabs(f.final_volumetric_strain), 0.01);
+  EXPECT_LT(f.max_lateral_error, 0.01);
+  // The comparable measure is the interior's: the published limit, plus what the rate adds,
+  // within three run-to-run standard deviations. Wide ([0.046, 0.170]): one specimen of 4000
+  // spheres is; the walls' own value (0.145-0.148) lies inside, so the next check is what tells
+  // the two measures apart. It fails if the material's friction moves by ~0.05 or the interior
+  // measure breaks.
+  EXPECT_GT(f.interior.mean, published - 3.0 * kRunScatter)
+      << "interior sin phi " << f.interior.mean << " +- " << f.interior.error;
+  EXPECT_LT(f.interior.mean, published + kRateExcess + 3.0 * kRunScatter)
+      << "interior sin phi " << f.interior.mean << " +- " << f.interior.error;
+  // The known discrepancy, stated: the stress ratio the walls measure includes the ordered layers
+  // along the six flat walls, which add 0.017-0.039 to sin phi (1-2 deg) at this size.
+  EXPECT_LT(f.difference.mean, -kLayerEffectMin) << "interior - wall sin phi";
+  EXPECT_GT(f.difference.mean, -kLayerEffectMax) << "interior - wall sin phi";
 }
 
 TEST(ElementSlow, CriticalStateAngleGrowsWithSlidingFriction) {
