@@ -1,0 +1,52 @@
+#!/usr/bin/env bash
+# Copies what a reader of a study needs, without its HDF5 files, into a folder to commit or share:
+# the report (page, figures, metrics.csv, case_summary.csv, summary.json) where it exists, and for
+# every run its run.json, resolved.toml, trapdoor.csv and run.log, with deposit.json and
+# analysis/metrics.json where they exist. Snapshots, checkpoints and analysis fields stay behind
+# (megabytes a run; the run folder keeps them).
+#
+#   scripts/publish-study.sh STUDY_DIR DEST_DIR [--finished-only]
+#
+# --finished-only: runs whose run.json does not say "complete": true are left out. DEST_DIR's
+# files are replaced one by one (a file that is no longer in the study stays: remove DEST_DIR first
+# for an exact copy).
+set -euo pipefail
+usage() { echo "usage: $0 STUDY_DIR DEST_DIR [--finished-only]" >&2; exit 2; }
+[ $# -ge 2 ] && [ $# -le 3 ] || usage
+study=$1
+dest=$2
+finished_only=0
+if [ $# -eq 3 ]; then
+  [ "$3" = --finished-only ] || usage
+  finished_only=1
+fi
+[ -d "$study/cases" ] || { echo "$0: $study holds no study (no cases/ folder)" >&2; exit 1; }
+mkdir -p "$dest"
+
+copied=0
+# A run is a folder under cases/ with a resolved.toml (cases/NAME or cases/NAME/seed-S).
+while IFS= read -r -d '' resolved; do
+  run=$(dirname "$resolved")
+  rel=${run#"$study"/}
+  if [ $finished_only -eq 1 ] && ! grep -q '"complete": *true' "$run/run.json" 2>/dev/null; then
+    continue
+  fi
+  mkdir -p "$dest/$rel"
+  for f in run.json resolved.toml trapdoor.csv run.log deposit.json; do
+    [ -f "$run/$f" ] && cp "$run/$f" "$dest/$rel/$f"
+  done
+  if [ -f "$run/analysis/metrics.json" ]; then
+    mkdir -p "$dest/$rel/analysis"
+    cp "$run/analysis/metrics.json" "$dest/$rel/analysis/metrics.json"
+  fi
+  copied=$((copied + 1))
+done < <(find "$study/cases" -name resolved.toml -print0 | sort -z)
+
+if [ -d "$study/report" ]; then
+  mkdir -p "$dest/report"
+  find "$study/report" -maxdepth 1 -type f ! -name '*.h5' -exec cp {} "$dest/report/" \;
+fi
+for f in study.log study.json; do
+  [ -f "$study/$f" ] && cp "$study/$f" "$dest/$f"
+done
+echo "publish-study: $copied runs and $( [ -d "$study/report" ] && echo "the report" || echo "no report") copied to $dest"
