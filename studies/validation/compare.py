@@ -1,0 +1,163 @@
+#!/usr/bin/env python3
+"""Each shortcut case of a validation study against its reference case, metric by metric.
+
+    python3 studies/validation/compare.py STUDY_DIR [--reference reference] [--format markdown|csv]
+
+STUDY_DIR is a study folder (or its published copy, scripts/publish-study.sh) whose report has been
+written (`trapdem study ... --report-only`): report/metrics.csv gives the mechanism metrics of every
+run, each run's deposit.json (`trapdem deposit RUN`) the deposit at 50 g before the trapdoor moves,
+its trapdoor.csv the geostatic trapdoor stress, its run.json the cost. For each case and metric it
+prints mean +- sample sd (n) and, for every case but the reference, the difference of the means and
+the verdict of the study report's trend rule (docs/study.md, Findings): "within" when
+|mean_case - mean_ref| <= sd_case + sd_ref, "BEYOND" otherwise. A case with one run has sd 0.
+"""
+import argparse
+import csv
+import json
+import math
+import os
+import sys
+
+
+def mean_sd(values):
+    values = [v for v in values if v is not None and not math.isnan(v)]
+    n = len(values)
+    if n == 0:
+        return None, None, 0
+    m = sum(values) / n
+    sd = math.sqrt(sum((v - m) ** 2 for v in values) / (n - 1)) if n > 1 else 0.0
+    return m, sd, n
+
+
+def number(text):
+    try:
+        return float(text)
+    except (TypeError, ValueError):
+        return None
+
+
+def deposit_at_lowering_start(run_dir):
+    """The last deposit entry (the lowering's first snapshot, trapdoor at 0, at the test's g)."""
+    path = os.path.join(run_dir, "deposit.json")
+    if not os.path.exists(path):
+        return {}
+    deposits = json.load(open(path))["deposits"]
+    settled = [d for d in deposits if d["stage"] == "settling"]
+    last = deposits[-1]
+    out = {
+        "phi_50g": last["bulk_solid_fraction"],
+        "coordination_50g": last["bulk_coordination"],
+        "mean_overlap_pct_d": 100 * last["mean_overlap_of_diameter"],
+        "max_overlap_pct_d": 100 * last["max_overlap_of_diameter"],
+        "surface_mm": 1000 * last["surface_height_m"],
+    }
+    if settled:
+        out["phi_1g"] = settled[-1]["bulk_solid_fraction"]
+    return out
+
+
+def geostatic_stress(run_dir):
+    path = os.path.join(run_dir, "trapdoor.csv")
+    if not os.path.exists(path):
+        return {}
+    with open(path) as f:
+        first = next(csv.DictReader(f))
+    return {"trapdoor_stress_kPa_at_0": number(first["trapdoor_stress_Pa"]) / 1000.0}
+
+
+def cost(run_dir):
+    path = os.path.join(run_dir, "run.json")
+    if not os.path.exists(path):
+        return {}
+    run = json.load(open(path))
+    return {"particle_steps_1e9": run["particle_steps"] / 1e9}
+
+
+# (key, label, how it is computed from a metrics.csv row; None: from the run folder)
+METRICS = [
+    ("phi_1g", "solid fraction after settling at 1 g", None),
+    ("phi_50g", "solid fraction at 50 g", None),
+    ("coordination_50g", "coordination number at 50 g", None),
+    ("mean_overlap_pct_d", "mean overlap at 50 g, % of d", None),
+    ("max_overlap_pct_d", "largest overlap at 50 g, % of d", None),
+    ("surface_mm", "surface height at 50 g, mm", None),
+    ("trapdoor_stress_kPa_at_0", "trapdoor stress before lowering, kPa", None),
+    ("min_load_ratio", "least trapdoor load / initial", lambda r: number(r["min_load_ratio"])),
+    ("min_load_at_over_B", "where: travel / B", lambda r: number(r["min_load_at_over_B"])),
+    ("final_load_ratio", "trapdoor load at the end / initial", lambda r: number(r["final_load_ratio"])),
+    ("band_left", "band angle left, deg", lambda r: number(r["band_angle_left_deg"])),
+    ("band_right", "band angle right, deg", lambda r: number(r["band_angle_right_deg"])),
+    ("band_mean", "band angle mean of both, deg", lambda r: number(r["band_angle_deg"])),
+    ("zone_surface_B", "zone of influence at the surface / B",
+     lambda r: number(r["zone_surface_m"]) / number(r["trapdoor_width_m"]) if number(r["zone_surface_m"]) else None),
+    ("zone_mid_B", "zone of influence at mid-height / B",
+     lambda r: number(r["zone_mid_height_m"]) / number(r["trapdoor_width_m"]) if number(r["zone_mid_height_m"]) else None),
+    ("particle_steps_1e9", "cost, 1e9 particle-steps", None),
+]
+
+
+def main():
+    parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
+    parser.add_argument("study_dir")
+    parser.add_argument("--reference", default="reference")
+    parser.add_argument("--format", choices=["markdown", "csv"], default="markdown")
+    args = parser.parse_args()
+    metrics_csv = os.path.join(args.study_dir, "report", "metrics.csv")
+    if not os.path.exists(metrics_csv):
+        sys.exit(f"compare.py: {metrics_csv} not found: write the report first (trapdem study ... --report-only)")
+    rows = list(csv.DictReader(open(metrics_csv)))
+    cases, labels, values = [], {}, {}
+    for row in rows:
+        case = row["case"]
+        if case not in labels:
+            cases.append(case)
+            labels[case] = row["label"]
+        seed = row["seed"]
+        run_dir = os.path.join(args.study_dir, "cases", case, f"seed-{seed}" if seed else "")
+        v = {}
+        v.update(deposit_at_lowering_start(run_dir))
+        v.update(geostatic_stress(run_dir))
+        v.update(cost(run_dir))
+        for key, _, from_row in METRICS:
+            if from_row is not None:
+                v[key] = from_row(row)
+        values.setdefault(case, []).append(v)
+    if args.reference not in values:
+        sys.exit(f"compare.py: no finished run of the reference case '{args.reference}' in {metrics_csv}")
+
+    stats = {c: {k: mean_sd([v.get(k) for v in values[c]]) for k, _, _ in METRICS} for c in cases}
+    others = [c for c in cases if c != args.reference]
+    if args.format == "csv":
+        w = csv.writer(sys.stdout)
+        w.writerow(["metric", "case", "n", "mean", "sd", "difference_from_reference", "verdict"])
+        for key, _, _ in METRICS:
+            mr, sr, _ = stats[args.reference][key]
+            for c in cases:
+                m, s, n = stats[c][key]
+                diff = m - mr if m is not None and mr is not None and c != args.reference else None
+                verdict = "" if diff is None else ("within" if abs(diff) <= s + sr else "BEYOND")
+                w.writerow([key, c, n, m, s, diff, verdict])
+        return
+
+    def cell(m, s, n):
+        return "-" if m is None else f"{m:.3g} ± {s:.2g} ({n})"
+
+    header = ["metric", f"{labels[args.reference]}"] + [f"{labels[c]}: value; difference" for c in others]
+    print("| " + " | ".join(header) + " |")
+    print("|" + " --- |" * len(header))
+    for key, label, _ in METRICS:
+        mr, sr, nr = stats[args.reference][key]
+        line = [label, cell(mr, sr, nr)]
+        for c in others:
+            m, s, n = stats[c][key]
+            if m is None or mr is None:
+                line.append(cell(m, s, n))
+                continue
+            diff = m - mr
+            verdict = "within" if abs(diff) <= s + sr else "**beyond**"
+            line.append(f"{cell(m, s, n)}; {diff:+.3g} {verdict}")
+        print("| " + " | ".join(line) + " |")
+
+
+if __name__ == "__main__":
+    main()
