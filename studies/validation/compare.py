@@ -9,7 +9,11 @@ run, each run's deposit.json (`trapdem deposit RUN`) the deposit at 50 g before 
 its trapdoor.csv the geostatic trapdoor stress, its run.json the cost. For each case and metric it
 prints mean +- sample sd (n) and, for every case but the reference, the difference of the means and
 the verdict of the study report's trend rule (docs/study.md, Findings): "within" when
-|mean_case - mean_ref| <= sd_case + sd_ref, "BEYOND" otherwise. A case with one run has sd 0.
+|mean_case - mean_ref| <= max(r, sd_case + sd_ref), "beyond" otherwise, with r the quantity's
+resolution as the report uses it (band angle 1 deg, zone widths 0.1 B, trapdoor load 0.02 of its
+initial value; the ground reaction curve's sampling, 0.1 mm = 0.002 B, for where the least load
+occurs) and r = 0 for the deposit and the geostatic stress (the rule is then the spread alone). A
+case with one run has sd 0.
 """
 import argparse
 import csv
@@ -65,6 +69,15 @@ def geostatic_stress(run_dir):
     return {"trapdoor_stress_kPa_at_0": number(first["trapdoor_stress_Pa"]) / 1000.0}
 
 
+def band_bases(run_dir):
+    """The bands' angles fitted near the trapdoor edge (analysis/metrics.json, base_angle_deg)."""
+    path = os.path.join(run_dir, "analysis", "metrics.json")
+    if not os.path.exists(path):
+        return {}
+    bands = json.load(open(path)).get("shear_bands", {})
+    return {f"band_base_{side}": bands.get(side, {}).get("base_angle_deg") for side in ("left", "right")}
+
+
 def cost(run_dir):
     path = os.path.join(run_dir, "run.json")
     if not os.path.exists(path):
@@ -73,27 +86,34 @@ def cost(run_dir):
     return {"particle_steps_1e9": run["particle_steps"] / 1e9}
 
 
-# (key, label, how it is computed from a metrics.csv row; None: from the run folder)
+# (key, label, resolution r of the trend rule, how it is computed from a metrics.csv row; None: from
+# the run folder)
 METRICS = [
-    ("phi_1g", "solid fraction after settling at 1 g", None),
-    ("phi_50g", "solid fraction at 50 g", None),
-    ("coordination_50g", "coordination number at 50 g", None),
-    ("mean_overlap_pct_d", "mean overlap at 50 g, % of d", None),
-    ("max_overlap_pct_d", "largest overlap at 50 g, % of d", None),
-    ("surface_mm", "surface height at 50 g, mm", None),
-    ("trapdoor_stress_kPa_at_0", "trapdoor stress before lowering, kPa", None),
-    ("min_load_ratio", "least trapdoor load / initial", lambda r: number(r["min_load_ratio"])),
-    ("min_load_at_over_B", "where: travel / B", lambda r: number(r["min_load_at_over_B"])),
-    ("final_load_ratio", "trapdoor load at the end / initial", lambda r: number(r["final_load_ratio"])),
-    ("band_left", "band angle left, deg", lambda r: number(r["band_angle_left_deg"])),
-    ("band_right", "band angle right, deg", lambda r: number(r["band_angle_right_deg"])),
-    ("band_mean", "band angle mean of both, deg", lambda r: number(r["band_angle_deg"])),
-    ("zone_surface_B", "zone of influence at the surface / B",
+    ("phi_1g", "solid fraction after settling at 1 g", 0.0, None),
+    ("phi_50g", "solid fraction at 50 g", 0.0, None),
+    ("coordination_50g", "coordination number at 50 g", 0.0, None),
+    ("mean_overlap_pct_d", "mean overlap at 50 g, % of d", 0.0, None),
+    ("max_overlap_pct_d", "largest overlap at 50 g, % of d", 0.0, None),
+    ("surface_mm", "surface height at 50 g, mm", 0.0, None),
+    ("trapdoor_stress_kPa_at_0", "trapdoor stress before lowering, kPa", 0.0, None),
+    ("min_load_ratio", "least trapdoor load / initial", 0.02, lambda r: number(r["min_load_ratio"])),
+    ("min_load_at_over_B", "where: travel / B", 0.002, lambda r: number(r["min_load_at_over_B"])),
+    ("final_load_ratio", "trapdoor load at the end / initial", 0.02, lambda r: number(r["final_load_ratio"])),
+    ("band_left", "band angle left, deg", 1.0, lambda r: number(r["band_angle_left_deg"])),
+    ("band_right", "band angle right, deg", 1.0, lambda r: number(r["band_angle_right_deg"])),
+    ("band_mean", "band angle mean of both, deg", 1.0, lambda r: number(r["band_angle_deg"])),
+    ("band_base_left", "band angle near the door edge, left, deg", 1.0, None),
+    ("band_base_right", "band angle near the door edge, right, deg", 1.0, None),
+    ("zone_surface_B", "zone of influence at the surface / B", 0.1,
      lambda r: number(r["zone_surface_m"]) / number(r["trapdoor_width_m"]) if number(r["zone_surface_m"]) else None),
-    ("zone_mid_B", "zone of influence at mid-height / B",
+    ("zone_mid_B", "zone of influence at mid-height / B", 0.1,
      lambda r: number(r["zone_mid_height_m"]) / number(r["trapdoor_width_m"]) if number(r["zone_mid_height_m"]) else None),
-    ("particle_steps_1e9", "cost, 1e9 particle-steps", None),
+    ("particle_steps_1e9", "cost, 1e9 particle-steps", 0.0, None),
 ]
+
+
+def verdict(diff, sd_case, sd_ref, resolution):
+    return "within" if abs(diff) <= max(resolution, sd_case + sd_ref) else "beyond"
 
 
 def main():
@@ -117,26 +137,26 @@ def main():
         v = {}
         v.update(deposit_at_lowering_start(run_dir))
         v.update(geostatic_stress(run_dir))
+        v.update(band_bases(run_dir))
         v.update(cost(run_dir))
-        for key, _, from_row in METRICS:
+        for key, _, _, from_row in METRICS:
             if from_row is not None:
                 v[key] = from_row(row)
         values.setdefault(case, []).append(v)
     if args.reference not in values:
         sys.exit(f"compare.py: no finished run of the reference case '{args.reference}' in {metrics_csv}")
 
-    stats = {c: {k: mean_sd([v.get(k) for v in values[c]]) for k, _, _ in METRICS} for c in cases}
+    stats = {c: {k: mean_sd([v.get(k) for v in values[c]]) for k, _, _, _ in METRICS} for c in cases}
     others = [c for c in cases if c != args.reference]
     if args.format == "csv":
         w = csv.writer(sys.stdout)
-        w.writerow(["metric", "case", "n", "mean", "sd", "difference_from_reference", "verdict"])
-        for key, _, _ in METRICS:
+        w.writerow(["metric", "case", "n", "mean", "sd", "difference_from_reference", "resolution", "verdict"])
+        for key, _, resolution, _ in METRICS:
             mr, sr, _ = stats[args.reference][key]
             for c in cases:
                 m, s, n = stats[c][key]
                 diff = m - mr if m is not None and mr is not None and c != args.reference else None
-                verdict = "" if diff is None else ("within" if abs(diff) <= s + sr else "BEYOND")
-                w.writerow([key, c, n, m, s, diff, verdict])
+                w.writerow([key, c, n, m, s, diff, resolution, "" if diff is None else verdict(diff, s, sr, resolution)])
         return
 
     def cell(m, s, n):
@@ -145,7 +165,7 @@ def main():
     header = ["metric", f"{labels[args.reference]}"] + [f"{labels[c]}: value; difference" for c in others]
     print("| " + " | ".join(header) + " |")
     print("|" + " --- |" * len(header))
-    for key, label, _ in METRICS:
+    for key, label, resolution, _ in METRICS:
         mr, sr, nr = stats[args.reference][key]
         line = [label, cell(mr, sr, nr)]
         for c in others:
@@ -154,8 +174,8 @@ def main():
                 line.append(cell(m, s, n))
                 continue
             diff = m - mr
-            verdict = "within" if abs(diff) <= s + sr else "**beyond**"
-            line.append(f"{cell(m, s, n)}; {diff:+.3g} {verdict}")
+            v = verdict(diff, s, sr, resolution)
+            line.append(f"{cell(m, s, n)}; {diff:+.3g} {'**beyond**' if v == 'beyond' else v}")
         print("| " + " | ".join(line) + " |")
 
 
