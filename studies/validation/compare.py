@@ -78,6 +78,11 @@ def band_bases(run_dir):
     return {f"band_base_{side}": bands.get(side, {}).get("base_angle_deg") for side in ("left", "right")}
 
 
+def finished(run_dir):
+    path = os.path.join(run_dir, "run.json")
+    return os.path.exists(path) and json.load(open(path)).get("complete") is True
+
+
 def cost(run_dir):
     path = os.path.join(run_dir, "run.json")
     if not os.path.exists(path):
@@ -134,6 +139,8 @@ def main():
             labels[case] = row["label"]
         seed = row["seed"]
         run_dir = os.path.join(args.study_dir, "cases", case, f"seed-{seed}" if seed else "")
+        if not finished(run_dir):
+            continue  # the report lists unfinished runs too (empty metrics); their files are partial
         v = {}
         v.update(deposit_at_lowering_start(run_dir))
         v.update(geostatic_stress(run_dir))
@@ -146,7 +153,7 @@ def main():
     if args.reference not in values:
         sys.exit(f"compare.py: no finished run of the reference case '{args.reference}' in {metrics_csv}")
 
-    stats = {c: {k: mean_sd([v.get(k) for v in values[c]]) for k, _, _, _ in METRICS} for c in cases}
+    stats = {c: {k: mean_sd([v.get(k) for v in values.get(c, [])]) for k, _, _, _ in METRICS} for c in cases}
     others = [c for c in cases if c != args.reference]
     if args.format == "csv":
         w = csv.writer(sys.stdout)
