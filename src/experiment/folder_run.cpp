@@ -23,6 +23,7 @@
 #include "io/atomic_file.hpp"
 #include "io/checkpoint.hpp"
 #include "io/config.hpp"
+#include "io/folder_lock.hpp"
 #include "io/snapshot.hpp"
 
 namespace fs = std::filesystem;
@@ -145,6 +146,15 @@ void report_halo(RunRecorder& recorder, RunRanks& ranks, const Simulation& sim, 
                              r, all[3 * r], all[3 * r + 1], all[3 * r + 2] * 1e6));
 }
 
+// Takes the run folder's lock before anything in it is written: a second process on the same
+// folder (a study submitted twice, a hand resume beside a running Slurm task) is refused instead of
+// both overwriting its checkpoint.h5 and snapshots.
+void lock_run_folder(std::optional<FolderLock>& lock, const RunFolder& folder) {
+  lock.emplace(folder.run_lock(),
+               "two runs in one folder would overwrite each other's checkpoint and snapshots; wait until it ends "
+               "(a study's Slurm task: squeue), or stop it (SIGINT/SIGTERM write a checkpoint) and resume then");
+}
+
 // The run once its folder's log is open (`log` is emplaced as soon as the folder is known). On
 // ranks every rank reads the configuration; the folder's checks and files are rank 0's, and each
 // step of the set-up is agreed on (an error on one rank is thrown on all).
@@ -155,6 +165,7 @@ bool run_logged(const FolderRunOptions& o, std::optional<RunLog>& log) {
   fs::path out;
   bool restart = false;  // --resume of a folder stopped before its first checkpoint
   std::optional<Config> loaded;
+  std::optional<FolderLock> lock;  // held by rank 0 until the run's last line (folder_lock.hpp)
   agreed(ranks, [&] {
     check_resume_options(o);
     if (resume) {
@@ -164,6 +175,7 @@ bool run_logged(const FolderRunOptions& o, std::optional<RunLog>& log) {
         if (!folder.has_checkpoint() && !fs::exists(folder.resolved_toml()))
           throw InputError(fmt::format("--resume {}: neither checkpoint.h5 nor resolved.toml there: not a run folder",
                                        out.string()));
+        lock_run_folder(lock, folder);
         log.emplace(folder.run_log(), o.quiet);
         log->say(fmt::format("trapdem run --resume {}", out.string()));
         restart = !folder.has_checkpoint();
@@ -206,6 +218,7 @@ bool run_logged(const FolderRunOptions& o, std::optional<RunLog>& log) {
       std::error_code ec;
       fs::create_directories(out, ec);
       if (ec) throw FileError(fmt::format("cannot create the output folder {}: {}", out.string(), ec.message()));
+      lock_run_folder(lock, folder);
       log.emplace(folder.run_log(), o.quiet);  // before anything else is written: the log from its first line
     }
     if (resume) {

@@ -26,6 +26,7 @@ class RunFolder {
   AnalysisFolder analysis() const { return AnalysisFolder(analysis_dir()); }     // the files in it
   std::filesystem::path metrics_json() const { return analysis().metrics_json(); }
   std::filesystem::path camera_dir() const { return dir_ / "camera"; }            // `trapdem render`
+  std::filesystem::path run_lock() const { return dir_ / "run.lock"; }            // held while a run writes (io/folder_lock.hpp)
 
   bool has_checkpoint() const { return std::filesystem::exists(checkpoint_h5()); }
   bool has_snapshots() const { return std::filesystem::exists(snapshots_h5()); }

@@ -2,7 +2,8 @@
 // resolved configuration; a resume that would run another one (an edited resolved.toml, a --set,
 // another file) is refused naming the first differing key unless --allow-change names it. A kill
 // right after the stage-end checkpoint no longer duplicates the lowering's first snapshot; a folder
-// stopped before its first checkpoint restarts with --resume; checkpoints are taken inside a stage.
+// stopped before its first checkpoint restarts with --resume; checkpoints are taken inside a stage;
+// a folder another process is running is refused.
 #include <gtest/gtest.h>
 
 #include <filesystem>
@@ -16,6 +17,7 @@
 #include "experiment/folder_run.hpp"
 #include "experiment/run_recorder.hpp"
 #include "io/checkpoint.hpp"
+#include "io/folder_lock.hpp"
 #include "io/snapshot.hpp"
 
 namespace trapdem {
@@ -174,6 +176,37 @@ TEST(ResumeIdentity, AFolderWithoutACheckpointRestartsFromTheBeginning) {
   // A folder with neither is no run folder.
   fs::create_directories(dir / "empty");
   EXPECT_NE(refusal(resume(dir / "empty")).find("not a run folder"), std::string::npos);
+}
+
+// A folder another process is running (its run.lock held) is refused, by a resume and by a fresh
+// run with the same --out, before anything in it is written; once that process is gone the run
+// carries on as if nothing had happened.
+TEST(ResumeIdentity, AFolderInUseByAnotherProcessIsRefusedUntouched) {
+  ScratchDir dir;
+  const fs::path run = dir / "run";
+  ASSERT_FALSE(run_in_folder(fresh(run, 300)));
+  const std::string log_before = read_all(run / "run.log");
+  const std::string checkpoint_before = read_all(run / "checkpoint.h5");
+  {
+    FolderLock other(run / "run.lock", "unused");  // as the other process holds it
+    const std::string m = refusal(resume(run, 400));
+    EXPECT_NE(m.find(run.string() + " is in use by another trapdem process (pid "), std::string::npos) << m;
+    EXPECT_NE(m.find("wait until it ends"), std::string::npos) << m;
+    EXPECT_EQ(read_all(run / "run.log"), log_before);
+    EXPECT_EQ(read_all(run / "checkpoint.h5"), checkpoint_before);
+
+    // A fresh run into a folder whose run has not yet written its first checkpoint (only run.log
+    // and resolved.toml exist for the first half hour of a real run).
+    const fs::path starting = dir / "starting";
+    fs::create_directories(starting);
+    FolderLock starting_lock(starting / "run.lock", "unused");
+    const std::string m2 = refusal(fresh(starting, 400));
+    EXPECT_NE(m2.find(starting.string() + " is in use by another trapdem process"), std::string::npos) << m2;
+    EXPECT_FALSE(fs::exists(starting / "run.log"));
+    EXPECT_FALSE(fs::exists(starting / "resolved.toml"));
+  }
+  EXPECT_FALSE(run_in_folder(resume(run, 400)));
+  EXPECT_EQ(read_checkpoint(run / "checkpoint.h5").stats.steps, 400);
 }
 
 // With a short interval, checkpoints come every 256 steps inside a stage (the pour here), not only
