@@ -14,6 +14,14 @@ resolution as the report uses it (band angle 1 deg, zone widths 0.1 B, trapdoor 
 initial value; the ground reaction curve's sampling, 0.1 mm = 0.002 B, for where the least load
 occurs) and r = 0 for the deposit and the geostatic stress (the rule is then the spread alone). A
 case with one run has sd 0.
+
+Paired cases. A shortcut that acts only after the deposit is made (the lowering rate) runs, on one
+thread, on the reference's own packing for the same seed: its deposit is the reference's to the
+last digit. Such a case is recognised (every seed both ran has equal deposit metrics and geostatic
+stress) and compared run by run as well: the effect of the shortcut is the mean +- sd of the
+per-seed differences, free of the packing noise, and its verdict is "within" when
+|mean effect| <= max(r, sd_ref), the reference's seed-to-seed spread (the shortcut moves a result
+by less than another packing would); a markdown table of its own, columns paired_* in the CSV.
 """
 import argparse
 import csv
@@ -121,6 +129,38 @@ def verdict(diff, sd_case, sd_ref, resolution):
     return "within" if abs(diff) <= max(resolution, sd_case + sd_ref) else "beyond"
 
 
+# What a shortcut acting after the deposit leaves exactly equal to the reference's run of the same seed.
+DEPOSIT_KEYS = ["phi_1g", "phi_50g", "coordination_50g", "mean_overlap_pct_d", "max_overlap_pct_d", "surface_mm",
+                "trapdoor_stress_kPa_at_0"]
+
+
+def paired_seeds(case_runs, reference_runs):
+    """The seeds the case shares with the reference if it ran on the reference's own packings (the
+    same deposit for every seed both finished, at least two of them), else []."""
+    common = sorted(set(case_runs) & set(reference_runs))
+    if len(common) < 2:
+        return []
+    for seed in common:
+        for key in DEPOSIT_KEYS:
+            a, b = case_runs[seed].get(key), reference_runs[seed].get(key)
+            if a is None or b is None or abs(a - b) > 1e-12 * max(abs(a), abs(b), 1e-300):
+                return []
+    return common
+
+
+def paired_effect(key, seeds, case_runs, reference_runs):
+    diffs = []
+    for seed in seeds:
+        a, b = case_runs[seed].get(key), reference_runs[seed].get(key)
+        if a is not None and b is not None and not math.isnan(a) and not math.isnan(b):
+            diffs.append(a - b)
+    return mean_sd(diffs)
+
+
+def paired_verdict(effect, sd_ref, resolution):
+    return "within" if abs(effect) <= max(resolution, sd_ref) else "beyond"
+
+
 def main():
     parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     parser.add_argument("study_dir")
@@ -131,7 +171,7 @@ def main():
     if not os.path.exists(metrics_csv):
         sys.exit(f"compare.py: {metrics_csv} not found: write the report first (trapdem study ... --report-only)")
     rows = list(csv.DictReader(open(metrics_csv)))
-    cases, labels, values = [], {}, {}
+    cases, labels, values, by_seed = [], {}, {}, {}
     for row in rows:
         case = row["case"]
         if case not in labels:
@@ -150,20 +190,31 @@ def main():
             if from_row is not None:
                 v[key] = from_row(row)
         values.setdefault(case, []).append(v)
+        by_seed.setdefault(case, {})[seed] = v
     if args.reference not in values:
         sys.exit(f"compare.py: no finished run of the reference case '{args.reference}' in {metrics_csv}")
 
     stats = {c: {k: mean_sd([v.get(k) for v in values.get(c, [])]) for k, _, _, _ in METRICS} for c in cases}
     others = [c for c in cases if c != args.reference]
+    reference_runs = by_seed[args.reference]
+    paired = {c: paired_seeds(by_seed.get(c, {}), reference_runs) for c in others}
+    paired = {c: seeds for c, seeds in paired.items() if seeds}
     if args.format == "csv":
         w = csv.writer(sys.stdout)
-        w.writerow(["metric", "case", "n", "mean", "sd", "difference_from_reference", "resolution", "verdict"])
+        w.writerow(["metric", "case", "n", "mean", "sd", "difference_from_reference", "resolution", "verdict",
+                    "paired_n", "paired_effect_mean", "paired_effect_sd", "paired_verdict"])
         for key, _, resolution, _ in METRICS:
             mr, sr, _ = stats[args.reference][key]
             for c in cases:
                 m, s, n = stats[c][key]
                 diff = m - mr if m is not None and mr is not None and c != args.reference else None
-                w.writerow([key, c, n, m, s, diff, resolution, "" if diff is None else verdict(diff, s, sr, resolution)])
+                row = [key, c, n, m, s, diff, resolution, "" if diff is None else verdict(diff, s, sr, resolution)]
+                if c in paired and key not in DEPOSIT_KEYS:
+                    e, se, ne = paired_effect(key, paired[c], by_seed[c], reference_runs)
+                    row += [ne, e, se, "" if e is None or sr is None else paired_verdict(e, sr, resolution)]
+                else:
+                    row += ["", "", "", ""]
+                w.writerow(row)
         return
 
     def cell(m, s, n):
@@ -183,6 +234,30 @@ def main():
             diff = m - mr
             v = verdict(diff, s, sr, resolution)
             line.append(f"{cell(m, s, n)}; {diff:+.3g} {'**beyond**' if v == 'beyond' else v}")
+        print("| " + " | ".join(line) + " |")
+    if not paired:
+        return
+    print()
+    print("Paired with the reference's own packings (the same seed, the same deposit): the shortcut's "
+          "effect is the mean ± sd of the per-seed differences, compared with the reference's "
+          "seed-to-seed sd.")
+    print()
+    header = ["metric", f"{labels[args.reference]}: sd between seeds"] + \
+             [f"{labels[c]}: effect (seeds {', '.join(paired[c])}); verdict" for c in paired]
+    print("| " + " | ".join(header) + " |")
+    print("|" + " --- |" * len(header))
+    for key, label, resolution, _ in METRICS:
+        if key in DEPOSIT_KEYS:
+            continue
+        mr, sr, nr = stats[args.reference][key]
+        line = [label, "-" if sr is None else f"{sr:.2g} ({nr})"]
+        for c in paired:
+            e, se, ne = paired_effect(key, paired[c], by_seed[c], reference_runs)
+            if e is None or sr is None:
+                line.append("-")
+                continue
+            v = paired_verdict(e, sr, resolution)
+            line.append(f"{e:+.3g} ± {se:.2g} ({ne}); {'**beyond**' if v == 'beyond' else v}")
         print("| " + " | ".join(line) + " |")
 
 

@@ -1,7 +1,8 @@
 #!/usr/bin/env python3
 """studies/validation/compare.py on a made-up study folder: the means, sample standard deviations
 and verdicts it prints equal a hand computation, and the rule uses the larger of the resolution
-and the sum of the spreads (docs/study.md, Findings).
+and the sum of the spreads (docs/study.md, Findings); a case on the reference's own packings is
+also compared seed by seed (paired).
 
     python3 tests/validation/compare_test.py STUDIES_VALIDATION_DIR
 """
@@ -46,6 +47,11 @@ def main():
                 # an unfinished run: the report lists it with empty metrics; its folder's partial
                 # deposit and cost must not count
                 "fast,shortcut,3,,,,,,,,,",
+                # paired: the reference's own packings (its deposits below are the reference's):
+                # left angles 2.5, 4.5 (effect +0.5 +- 0 against the reference's sd 1.414: within);
+                # least loads 0.45, 0.47 (effect -0.05 against max(0.02, 0.0141): beyond)
+                "lowering,door 0.1 m/s,1,0.05,1,2.5,0,0.10,0.07,0.45,0.02,0.60",
+                "lowering,door 0.1 m/s,2,0.05,3,4.5,2,0.11,0.07,0.47,0.02,0.61",
                 # a case none of whose runs has finished (no folder yet): shown as "-", no error
                 "unrun,not yet run,1,,,,,,,,,"]
         open(os.path.join(root, "report", "metrics.csv"), "w").write("\n".join(rows) + "\n")
@@ -54,6 +60,8 @@ def main():
         write_run(root, "fast", 1, 0.6005, 4e-4, 27100.0, -10.5)
         write_run(root, "fast", 2, 0.6025, 4e-4, 27300.0, -11.5)
         write_run(root, "fast", 3, 0.7, 1e-2, 1.0, 40.0, complete=False)
+        write_run(root, "lowering", 1, 0.600, 1e-5, 27000.0, -10.0)
+        write_run(root, "lowering", 2, 0.602, 1e-5, 27200.0, -13.0)
         out = subprocess.run([sys.executable, script, root, "--format", "csv"], check=True,
                              capture_output=True, text=True).stdout
         table = {(r["metric"], r["case"]): r for r in csv.DictReader(io.StringIO(out))}
@@ -85,10 +93,27 @@ def main():
         failures.append("a case without a finished run is not shown as '-' (n = %s)" % table[("band_left", "unrun")]["n"])
     if "**beyond**" not in markdown or "| band angle left, deg |" not in markdown:
         failures.append("the markdown table does not mark the left band angle beyond:\n" + markdown)
+    def expect_paired(metric, case, effect, sd, verdict):
+        r = table[(metric, case)]
+        if (r["paired_n"] != "2" or abs(float(r["paired_effect_mean"]) - effect) > 1e-9 or
+                abs(float(r["paired_effect_sd"]) - sd) > 1e-9 or r["paired_verdict"] != verdict):
+            failures.append(f"{metric} {case} paired: got n {r['paired_n']} effect {r['paired_effect_mean']} sd "
+                            f"{r['paired_effect_sd']} '{r['paired_verdict']}', expected {effect} {sd} '{verdict}'")
+
+    expect_paired("band_left", "lowering", 0.5, 0.0, "within")
+    expect_paired("min_load_ratio", "lowering", -0.05, 0.0, "beyond")
+    # base angles -10, -13 against -10, -12: effects 0 and -1 (mean -0.5, sd 0.707) within max(1, 1.414)
+    expect_paired("band_base_left", "lowering", -0.5, 0.5 ** 0.5, "within")
+    if table[("band_left", "fast")]["paired_n"] != "":
+        failures.append("'fast' (another deposit per seed) was taken as paired with the reference")
+    if table[("phi_50g", "lowering")]["paired_n"] != "":
+        failures.append("the deposit, equal by construction in a paired case, was given a paired effect")
+    if "| band angle left, deg | 1.4 (2) | +0.5 ± 0 (2); within |" not in markdown:
+        failures.append("the markdown's paired table lacks the left band's effect:\n" + markdown)
     if failures:
         print("\n".join(failures))
         sys.exit(1)
-    print("compare.py: 8 metrics and the markdown table as computed by hand")
+    print("compare.py: 8 metrics, 3 paired effects and the markdown tables as computed by hand")
 
 
 if __name__ == "__main__":
