@@ -247,6 +247,14 @@ bool run_logged(const FolderRunOptions& o, std::optional<RunLog>& log) {
   RunRecorder recorder(experiment, folder, log ? &*log : nullptr,
                        RunStopRules{&g_signal, o.stop_after_seconds, o.stop_at_step}, ranks);
   recorder.set_configuration(configuration);
+  on_root(ranks, [&] {
+    // What the run did before this segment: the checkpoint's record of it (a killed segment counts
+    // up to its last checkpoint), or, from an older trapdem's checkpoint, run.json's.
+    if (resume) {
+      const std::optional<RunHistory> stored = RunHistory::from(ckpt->metadata);
+      recorder.set_history(stored ? *stored : RunHistory::from_record(folder));
+    }
+  });
   if (resume) {
     std::map<std::string, std::string> metadata;
     if (ranks) {
@@ -267,7 +275,6 @@ bool run_logged(const FolderRunOptions& o, std::optional<RunLog>& log) {
   g_signal = 0;
   auto previous_int = std::signal(SIGINT, on_signal);
   auto previous_term = std::signal(SIGTERM, on_signal);
-  const double start = now_seconds();
   const std::int64_t start_steps = experiment.simulation().step_count();
   bool complete = false;
   try {
@@ -279,7 +286,7 @@ bool run_logged(const FolderRunOptions& o, std::optional<RunLog>& log) {
   }
   std::signal(SIGINT, previous_int);
   std::signal(SIGTERM, previous_term);
-  const double seconds = now_seconds() - start;
+  const double seconds = recorder.segment_seconds();  // from before the checkpoint's restore, as checkpoints count
   const Simulation& sim = experiment.simulation();
   const std::size_t particles = experiment.particle_count();
   if (complete) {
@@ -289,9 +296,10 @@ bool run_logged(const FolderRunOptions& o, std::optional<RunLog>& log) {
   // The last line's rate is run.json's: the run's particle-steps over its wall clock, every segment.
   double per_second = 0.0;
   on_root(ranks, [&] {
-    per_second = record_run_segment(folder, RunSegment{complete, stage_name(experiment.stage()), seconds,
-                                                       sim.step_count() - start_steps, experiment.particle_steps_run(),
-                                                       particles});
+    per_second = record_run_segment(folder,
+                                    RunSegment{complete, stage_name(experiment.stage()), seconds, sim.step_count(),
+                                               experiment.particle_steps_total(), particles},
+                                    recorder.history());
   });
   recorder.say(fmt::format("{} after {} of wall clock: {} steps, {} particles, {:.2f} M particle-steps/s{}",
                            complete ? "finished" : "stopped (checkpoint written; carry on with --resume)",

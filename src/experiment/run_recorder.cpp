@@ -26,6 +26,8 @@ RunRecorder::RunRecorder(TrapdoorExperiment& experiment, RunFolder folder, RunLo
   });
 }
 
+double RunRecorder::segment_seconds() const { return now_seconds() - started_; }
+
 void RunRecorder::progress(const StageProgress& p) { say(progress_line(p)); }
 
 void RunRecorder::stage_finished(Stage stage, const std::string& summary) {
@@ -63,6 +65,7 @@ void RunRecorder::checkpoint(const std::map<std::string, std::string>& state) {
   auto metadata = state;
   metadata["run.name"] = experiment_.config().name;
   metadata[kSnapshotCount] = std::to_string(snapshots_);
+  history_.store(metadata, segment_seconds());
   if (!configuration_.empty()) {
     metadata[kConfiguration] = configuration_;
     metadata[kConfigurationDigest] = config_digest(configuration_);

@@ -14,6 +14,7 @@
 #include "experiment/run_folder.hpp"
 #include "experiment/run_log.hpp"
 #include "experiment/run_ranks.hpp"
+#include "experiment/run_record.hpp"
 #include "experiment/trapdoor_experiment.hpp"
 
 namespace trapdem {
@@ -40,6 +41,13 @@ class RunRecorder : public ExperimentObserver {
   // every checkpoint so that a resume can check it carries on the run that was started.
   void set_configuration(std::string resolved_values) { configuration_ = std::move(resolved_values); }
 
+  // The run's wall clock and segments before this segment (run_record.hpp), added to the segment's
+  // own clock in every checkpoint, so that a kill loses at most the time since the last one.
+  void set_history(const RunHistory& history) { history_ = history; }
+  const RunHistory& history() const { return history_; }
+  // Wall clock since the recorder was made: the segment's (rank 0's clock, as the checkpoints').
+  double segment_seconds() const;
+
   // Checkpoint metadata: the snapshots in snapshots.h5 when it was taken (a resume keeps that many),
   // the configuration and its digest.
   static constexpr const char* kSnapshotCount = "run.snapshot_count";
@@ -64,6 +72,7 @@ class RunRecorder : public ExperimentObserver {
   bool checkpoint_wanted_ = false;
   std::size_t snapshots_ = 0;       // in snapshots.h5
   std::string configuration_;
+  RunHistory history_;
   std::int64_t calls_ = 0, stop_calls_ = 0;
 };
 

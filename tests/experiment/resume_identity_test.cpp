@@ -3,7 +3,7 @@
 // another file) is refused naming the first differing key unless --allow-change names it. A kill
 // right after the stage-end checkpoint no longer duplicates the lowering's first snapshot; a folder
 // stopped before its first checkpoint restarts with --resume; checkpoints are taken inside a stage;
-// a folder another process is running is refused.
+// a folder another process is running is refused; a killed segment counts in run.json.
 #include <gtest/gtest.h>
 
 #include <filesystem>
@@ -14,7 +14,9 @@
 
 #include "../io/io_test_support.hpp"
 #include "core/errors.hpp"
+#include "core/json.hpp"
 #include "experiment/folder_run.hpp"
+#include "experiment/run_record.hpp"
 #include "experiment/run_recorder.hpp"
 #include "io/checkpoint.hpp"
 #include "io/folder_lock.hpp"
@@ -207,6 +209,52 @@ TEST(ResumeIdentity, AFolderInUseByAnotherProcessIsRefusedUntouched) {
   }
   EXPECT_FALSE(run_in_folder(resume(run, 400)));
   EXPECT_EQ(read_checkpoint(run / "checkpoint.h5").stats.steps, 400);
+}
+
+// run.json counts a segment ended by a kill up to its last checkpoint (issue 12 times a paper-scale
+// run from run.json, and a session's end kills it): each checkpoint carries the run's wall clock and
+// segments, and the resume counts on from there. The steps and particle-steps are then the run's
+// own, equal to those of a run that went straight through.
+TEST(ResumeIdentity, AKilledSegmentCountsUpToItsLastCheckpoint) {
+  ScratchDir dir;
+  const fs::path run = dir / "run";
+  ASSERT_FALSE(run_in_folder(fresh(run, 300)));  // segment 1 stops cleanly
+  const std::string record_after_first = read_all(run / "run.json");
+  ASSERT_FALSE(run_in_folder(resume(run, 400)));  // segment 2: its checkpoint at 400, then ...
+  const Checkpoint at_400 = read_checkpoint(run / "checkpoint.h5");
+  const std::optional<RunHistory> stored = RunHistory::from(at_400.metadata);
+  ASSERT_TRUE(stored);
+  EXPECT_EQ(stored->segments, 2.0);
+  std::ofstream(run / "run.json") << record_after_first;  // ... a kill before its run.json was written
+  ASSERT_FALSE(run_in_folder(resume(run, 500)));
+  const Json record = Json::parse(read_all(run / "run.json"), "run.json");
+  EXPECT_EQ(record["segments"].as_number(), 3.0);
+  EXPECT_EQ(record["steps"].as_number(), 500.0);
+  EXPECT_GE(record["wall_seconds"].as_number(), stored->wall_seconds);
+
+  ASSERT_FALSE(run_in_folder(fresh(dir / "straight", 500)));
+  const Json straight = Json::parse(read_all(dir / "straight" / "run.json"), "run.json");
+  EXPECT_EQ(record["particle_steps"].as_number(), straight["particle_steps"].as_number());
+  EXPECT_EQ(straight["segments"].as_number(), 1.0);
+  EXPECT_EQ(straight["steps"].as_number(), 500.0);
+}
+
+TEST(ResumeIdentity, ABadRunHistoryInACheckpointIsAClearError) {
+  EXPECT_FALSE(RunHistory::from({{"run.name", "x"}}));  // an older trapdem's checkpoint
+  for (const char* bad_text : {"", "abc", "-1", "inf", "nan", "12s"}) {
+    const std::string bad = bad_text;
+    try {
+      RunHistory::from({{RunHistory::kWallSeconds, bad}, {RunHistory::kSegments, "0"}});
+      ADD_FAILURE() << "accepted '" << bad << "'";
+    } catch (const InputError& e) {
+      EXPECT_NE(std::string(e.what()).find("checkpoint metadata run.wall_seconds = '" + bad + "'"), std::string::npos)
+          << e.what();
+    }
+  }
+  const std::optional<RunHistory> h = RunHistory::from({{RunHistory::kWallSeconds, "12.5"}, {RunHistory::kSegments, "1"}});
+  ASSERT_TRUE(h);
+  EXPECT_EQ(h->wall_seconds, 12.5);
+  EXPECT_EQ(h->segments, 2.0);
 }
 
 // With a short interval, checkpoints come every 256 steps inside a stage (the pour here), not only
