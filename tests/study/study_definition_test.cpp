@@ -152,6 +152,17 @@ TEST(StudyDefinition, ThePaperStudyResolvesAtBothScales) {
     for (const char* key : {"contact.static_friction", "contact.kinetic_friction", "contact.rolling_friction",
                             "contact.rolling_model", "contact.restitution", "box.width", "trapdoor.width"})
       EXPECT_EQ(study_case.require_value_text(key), preset.require_value_text(key)) << presets[k] << " " << key;
+    // The paper scale adds the shortcuts docs/validation.md validated; paper-preset is the preset as it is.
+    EXPECT_DOUBLE_EQ(study_case.get_double("contact.normal_stiffness", 0.0), 5.0e4);
+    EXPECT_DOUBLE_EQ(study_case.get_double("contact.tangential_stiffness", 0.0), 2.5e4);
+    EXPECT_DOUBLE_EQ(study_case.get_double("numerics.time_step_fraction", 0.0), 0.3);
+    EXPECT_DOUBLE_EQ(study_case.get_double("pluviation.flow_rate", -1.0), 0.0);
+    EXPECT_DOUBLE_EQ(study_case.get_double("trapdoor.rate", 0.0), 0.1);
+    Config as_preset =
+        Config::parse(resolved_case_configuration(s.cases[k], s.scale("paper-preset"), app::preset_directory()), "study");
+    for (const char* key : {"contact.normal_stiffness", "numerics.time_step_fraction", "pluviation.flow_rate",
+                            "trapdoor.rate"})
+      EXPECT_EQ(as_preset.require_value_text(key), preset.require_value_text(key)) << presets[k] << " " << key;
   }
 }
 
