@@ -28,11 +28,42 @@ RunRecorder::RunRecorder(TrapdoorExperiment& experiment, RunFolder folder, RunLo
 
 double RunRecorder::segment_seconds() const { return now_seconds() - started_; }
 
-void RunRecorder::progress(const StageProgress& p) { say(progress_line(p)); }
+void RunRecorder::progress(const StageProgress& p) {
+  mark_stage_start();
+  say(progress_line(p));
+}
+
+RunRecorder::StageMark RunRecorder::mark_now(bool resumed) const {
+  const Simulation& sim = experiment_.simulation();
+  // Called inside the stage's last step, which the experiment counts once the step returns: its
+  // particles are counted here, so the stages' particle-steps add up to run.json's.
+  const double in_flight = sim.step_count() > 0 ? double(experiment_.particle_count()) : 0.0;
+  return StageMark{segment_seconds(), experiment_.particle_steps_total() + (resumed ? 0.0 : in_flight),
+                   sim.stats().rebuilds, sim.stats().rebuild_seconds, resumed};
+}
+
+void RunRecorder::mark_stage_start() {
+  if (!stage_mark_) stage_mark_ = mark_now(experiment_.simulation().step_count() > 0);
+}
+
+std::string RunRecorder::stage_cost() {
+  mark_stage_start();
+  const StageMark start = *stage_mark_;
+  const StageMark end = mark_now(false);
+  stage_mark_ = end;
+  const double seconds = end.seconds - start.seconds;
+  const double particle_steps = end.particle_steps - start.particle_steps;
+  return fmt::format("  its cost{}: {} of wall clock, {:.4g} particle-steps ({:.2f} M/s), {} neighbour-list rebuilds "
+                     "({} of them)",
+                     start.resumed ? " since this segment's resume" : "", format_duration(seconds), particle_steps,
+                     seconds > 0.0 ? particle_steps / seconds / 1e6 : 0.0, end.rebuilds - start.rebuilds,
+                     format_duration(end.rebuild_seconds - start.rebuild_seconds));
+}
 
 void RunRecorder::stage_finished(Stage stage, const std::string& summary) {
   say(fmt::format("stage {} finished at t = {:.4f} s (step {}): {}", stage_name(stage),
                   experiment_.simulation().time(), experiment_.simulation().step_count(), summary));
+  say(stage_cost());
   checkpoint_wanted_ = true;  // every stage end is a checkpoint
 }
 
@@ -55,6 +86,7 @@ void RunRecorder::ground_reaction_row(const GroundReactionRow&, const std::vecto
 }
 
 bool RunRecorder::checkpoint_due() {
+  mark_stage_start();
   if (++calls_ % 256 != 0 && !checkpoint_wanted_) return false;
   if (checkpoint_wanted_) return true;
   const bool due = now_seconds() - last_checkpoint_ >= experiment_.config().output.checkpoint_interval;

@@ -8,6 +8,7 @@
 #include <atomic>
 #include <cstdint>
 #include <map>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -74,6 +75,20 @@ class RunRecorder : public ExperimentObserver {
   std::string configuration_;
   RunHistory history_;
   std::int64_t calls_ = 0, stop_calls_ = 0;
+
+  // Where the stage now running began in this segment (its first step, or the resume that carries
+  // it on): each stage's end says what it cost, so a long run's log shows where its time went.
+  struct StageMark {
+    double seconds = 0.0;         // the segment's wall clock
+    double particle_steps = 0.0;  // the run's particle-steps
+    std::int64_t rebuilds = 0;    // neighbour-list rebuilds (this rank's)
+    double rebuild_seconds = 0.0;
+    bool resumed = false;         // the stage began in an earlier segment
+  };
+  std::optional<StageMark> stage_mark_;
+  StageMark mark_now(bool resumed) const;
+  void mark_stage_start();  // the first time the experiment calls in: after a resume's restore
+  std::string stage_cost();  // since the mark, and marks the next stage's start
 };
 
 // Seconds of a monotonic clock (durations are written by format_duration, run_progress.hpp).

@@ -6,6 +6,7 @@
 #include <deque>
 #include <filesystem>
 #include <fstream>
+#include <regex>
 #include <sstream>
 
 #include "core/errors.hpp"
@@ -153,6 +154,27 @@ TEST(TinyRun, ResumedRunEndsIdentical) {
   ASSERT_EQ(app::run_experiment(straight), 0);
   const Checkpoint end = read_checkpoint(fs::path(straight.out_dir) / "checkpoint.h5");
 
+  // Each stage's end says what it cost (where a long run's time went): the four stages'
+  // particle-steps, each printed to 4 significant digits, add up to run.json's within that
+  // rounding; the pour rebuilds the neighbour lists at least at every insertion.
+  {
+    const std::string log = read_text(fs::path(straight.out_dir) / "run.log");
+    const std::regex cost(R"(its cost: [^,]+ of wall clock, ([0-9.e+]+) particle-steps \([0-9.]+ M/s\), (\d+) neighbour-list rebuilds)");
+    std::vector<double> particle_steps;
+    std::vector<long long> rebuilds;
+    for (auto it = std::sregex_iterator(log.begin(), log.end(), cost); it != std::sregex_iterator(); ++it) {
+      particle_steps.push_back(std::stod((*it)[1]));
+      rebuilds.push_back(std::stoll((*it)[2]));
+    }
+    ASSERT_EQ(particle_steps.size(), 4u) << log;
+    EXPECT_GT(rebuilds.front(), 0) << log;
+    std::smatch recorded;
+    const std::string record = read_text(fs::path(straight.out_dir) / "run.json");
+    ASSERT_TRUE(std::regex_search(record, recorded, std::regex(R"("particle_steps": ([0-9]+))"))) << record;
+    const double total = std::stod(recorded[1]);
+    EXPECT_NEAR(particle_steps[0] + particle_steps[1] + particle_steps[2] + particle_steps[3], total, 6e-4 * total);
+  }
+
   // One run interrupted twice (in an early stage, then during lowering) and resumed each time: each
   // piece must continue exactly where the last stopped for the end to match (two runs' work, not
   // three as with an interrupted run per stop).
@@ -172,6 +194,10 @@ TEST(TinyRun, ResumedRunEndsIdentical) {
     }
   }
   const Checkpoint resumed = read_checkpoint(fs::path(first.out_dir) / "checkpoint.h5");
+  // The lowering, carried on by the last resume, states its cost since then, not the stage's.
+  const std::string resumed_log = read_text(fs::path(first.out_dir) / "run.log");
+  EXPECT_NE(resumed_log.find("stage lowering finished"), std::string::npos) << resumed_log;
+  EXPECT_NE(resumed_log.find("its cost since this segment's resume: "), std::string::npos) << resumed_log;
   ASSERT_EQ(resumed.stats.steps, end.stats.steps);
   ASSERT_EQ(resumed.particles.size(), end.particles.size());
   for (std::size_t i = 0; i < end.particles.size(); ++i) {
