@@ -53,11 +53,12 @@ std::string RunRecorder::stage_cost() {
   stage_mark_ = end;
   const double seconds = end.seconds - start.seconds;
   const double particle_steps = end.particle_steps - start.particle_steps;
+  const double rebuild_seconds = end.rebuild_seconds - start.rebuild_seconds;
   return fmt::format("  its cost{}: {} of wall clock, {:.4g} particle-steps ({:.2f} M/s), {} neighbour-list rebuilds "
-                     "({} of them)",
+                     "taking {:.1f} % of that wall clock",
                      start.resumed ? " since this segment's resume" : "", format_duration(seconds), particle_steps,
                      seconds > 0.0 ? particle_steps / seconds / 1e6 : 0.0, end.rebuilds - start.rebuilds,
-                     format_duration(end.rebuild_seconds - start.rebuild_seconds));
+                     seconds > 0.0 ? 100.0 * rebuild_seconds / seconds : 0.0);
 }
 
 void RunRecorder::stage_finished(Stage stage, const std::string& summary) {
