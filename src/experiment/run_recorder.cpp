@@ -29,7 +29,7 @@ RunRecorder::RunRecorder(TrapdoorExperiment& experiment, RunFolder folder, RunLo
 double RunRecorder::segment_seconds() const { return now_seconds() - started_; }
 
 void RunRecorder::progress(const StageProgress& p) {
-  mark_stage_start();
+  mark_stage_start();  // the experiment's first call, forced before its first step (after a resume's restore)
   say(progress_line(p));
 }
 
@@ -87,7 +87,6 @@ void RunRecorder::ground_reaction_row(const GroundReactionRow&, const std::vecto
 }
 
 bool RunRecorder::checkpoint_due() {
-  mark_stage_start();
   if (++calls_ % 256 != 0 && !checkpoint_wanted_) return false;
   if (checkpoint_wanted_) return true;
   const bool due = now_seconds() - last_checkpoint_ >= experiment_.config().output.checkpoint_interval;

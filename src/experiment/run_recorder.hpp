@@ -87,7 +87,7 @@ class RunRecorder : public ExperimentObserver {
   };
   std::optional<StageMark> stage_mark_;
   StageMark mark_now(bool resumed) const;
-  void mark_stage_start();  // the first time the experiment calls in: after a resume's restore
+  void mark_stage_start();  // at the first progress line, before the first step: after a resume's restore
   std::string stage_cost();  // since the mark, and marks the next stage's start
 };
 
