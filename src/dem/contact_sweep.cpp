@@ -20,8 +20,8 @@ struct SweepInputs {
   bool periodic;
   double dt;
   PairSweepLists lists;
-  const ContactHistory* history;       // last step's compact histories
-  ContactHistory* next_history;        // this step's
+  PairHistoryRead history;             // last step's compact histories
+  PairHistoryWrite next_history;       // this step's
   const std::uint32_t* first;          // the pair list's
   PairBatchLawFn pair_law;
   const LawParams& pair_params;
@@ -175,8 +175,8 @@ void Simulation::contacts(bool kick) {
                        dt_,
                        {pairs_.first.data(), pairs_.partner.data(), pair_contact_.data(),
                         static_cast<std::uint32_t>(pairs_.size())},
-                       contacts_.data(),
-                       contacts_next_.data(),
+                       contacts_.read(),
+                       contacts_next_.write(),
                        pairs_.first.data(),
                        pair_batch_law(s.particle_choices),
                        s.particle_params,

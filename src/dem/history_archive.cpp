@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <numeric>
+#include <optional>
 #include <utility>
 
 namespace trapdem {
@@ -12,20 +13,35 @@ ContactHistory flipped(ContactHistory h) {
   h.rolling_spring = -h.rolling_spring;
   return h;
 }
-}  // namespace
 
-void HistoryArchive::store_pairs(const PairList& list, const ContactSlots& slot, const ContactHistory* contacts,
-                                 const std::vector<std::int64_t>& id) {
+// Archives pair k's history history_of(k) for the listed pairs whose history_of(k) is not null.
+template <class HistoryOf>
+void archive_pairs(const PairList& list, const std::vector<std::int64_t>& id, HistoryOf history_of,
+                   std::vector<HistoryArchive::PairRecord>& pairs) {
   pairs.clear();
   const std::size_t n = list.first.empty() ? 0 : list.first.size() - 1;
   for (std::size_t i = 0; i < n; ++i) {
     for (std::uint32_t k = list.first[i]; k < list.first[i + 1]; ++k) {
-      if (slot[k] == kNoContact) continue;
-      const ContactHistory& h = contacts[slot[k]];
+      const std::optional<ContactHistory> h = history_of(k);
+      if (!h) continue;
       const std::int64_t a = id[i], b = id[list.partner[k]];
-      pairs.push_back(a < b ? PairRecord{a, b, h} : PairRecord{b, a, flipped(h)});
+      pairs.push_back(a < b ? HistoryArchive::PairRecord{a, b, *h} : HistoryArchive::PairRecord{b, a, flipped(*h)});
     }
   }
+}
+}  // namespace
+
+void HistoryArchive::store_pairs(const PairList& list, const ContactSlots& slot, const PairHistories& contacts,
+                                 const std::vector<std::int64_t>& id) {
+  archive_pairs(list, id, [&](std::uint32_t k) {
+    return slot[k] == kNoContact ? std::nullopt : std::optional<ContactHistory>(contacts.get(slot[k]));
+  }, pairs);
+}
+
+void HistoryArchive::store_pairs(const PairList& list, const std::vector<std::int64_t>& id) {
+  archive_pairs(list, id, [&](std::uint32_t k) {
+    return list.history[k].touching() ? std::optional<ContactHistory>(list.history[k]) : std::nullopt;
+  }, pairs);
 }
 
 namespace {
@@ -77,7 +93,7 @@ void HistoryArchive::store_walls(const WallList& list, const std::vector<std::in
 }
 
 std::size_t HistoryArchive::restore_pairs(const PairList& list, const std::vector<std::int64_t>& id,
-                                          ContactSlots& slot, ContactHistory* contacts) const {
+                                          ContactSlots& slot, PairHistories& contacts) const {
   const std::size_t n = list.first.size() - 1;
   slot.assign(list.size(), kNoContact);
   if (pairs.empty()) return 0;
@@ -112,7 +128,7 @@ std::size_t HistoryArchive::restore_pairs(const PairList& list, const std::vecto
       while (mine != mine_end && mine->partner < list.partner[k]) ++mine;  // no longer within reach
       if (mine == mine_end || mine->partner != list.partner[k]) continue;
       const ContactHistory& h = pairs[mine->record & ~kFlip].history;
-      contacts[found] = (mine->record & kFlip) ? flipped(h) : h;
+      contacts.set(found, (mine->record & kFlip) ? flipped(h) : h);
       slot[k] = found++;
       ++mine;
     }

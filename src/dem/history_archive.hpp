@@ -5,6 +5,7 @@
 #include <vector>
 
 #include "dem/contact/contact_history.hpp"
+#include "dem/pair_histories.hpp"
 #include "dem/pair_list.hpp"
 #include "dem/wall_list.hpp"
 
@@ -12,14 +13,16 @@ namespace trapdem {
 
 class HistoryArchive {
  public:
-  // From the compact form: pair k's history is contacts[slot[k]] where slot[k] != kNoContact.
-  void store_pairs(const PairList& pairs, const ContactSlots& slot, const ContactHistory* contacts,
+  // From the compact form: pair k's history is contacts.get(slot[k]) where slot[k] != kNoContact.
+  void store_pairs(const PairList& pairs, const ContactSlots& slot, const PairHistories& contacts,
                    const std::vector<std::int64_t>& id);
+  // From the per-listed-pair form (PairList::history, as Simulation::pairs() gives it): the touching ones.
+  void store_pairs(const PairList& pairs, const std::vector<std::int64_t>& id);
   void store_walls(const WallList& walls, const std::vector<std::int64_t>& id);
   // Into the compact form: slot[k] for every listed pair; the histories found packed at the front of
   // `contacts` (room for pairs.size() entries) in pair order. Returns how many were found.
   std::size_t restore_pairs(const PairList& pairs, const std::vector<std::int64_t>& id, ContactSlots& slot,
-                            ContactHistory* contacts) const;
+                            PairHistories& contacts) const;
   void restore_walls(WallList& walls, const std::vector<std::int64_t>& id) const;
 
   struct PairRecord {

@@ -21,8 +21,9 @@ struct PairBatchLaw {
   using Fn = PairBatchLawFn;
   template <LawChoices kLaw>
   static void run(ContactBatch& batch, std::uint32_t count, const LawParams& law_params, const BodyArrays& body,
-                  const ContactHistory* __restrict history, double dt) {
+                  const PairHistoryRead& history_in, double dt) {
     const LawParams p = law_params;  // a local copy: the loop's stores cannot alias it
+    const PairHistoryRead history = history_in;
     const double* __restrict r = body.radius;
     const double* __restrict m = body.mass;
     const double* __restrict inv_i = body.inv_inertia;
@@ -41,7 +42,7 @@ struct PairBatchLaw {
       batch.overlap_ratio[q] = overlap / std::min(ri, rj);
       const ContactBodies b =
           reduce_bodies<kLaw, SecondBody::sphere>(Body{m[i], ri, inv_i[i]}, Body{m[j], rj, inv_i[j]}, overlap, dist);
-      ContactHistory h = history[batch.history_in[q]];
+      ContactHistory h = load_history<kLaw>(history, batch.history_in[q]);
       const ContactForce cf = ContactEvaluator<kLaw>::evaluate(p, b, normal, overlap, v[i] - v[j], w[i], w[j], h, dt);
       const ContactTorques torques = contact_torques(cf, b, normal);
       store_in_lane(batch, q, cf.force, h);
@@ -112,8 +113,12 @@ std::uint32_t collect_touching_in(PairCursor& at, std::size_t end, const Vec3* _
       count += touching ? 1u : 0u;
       next += touching ? 1u : 0u;
       const std::uint32_t history_ahead = std::min(next + kHistoryAhead, no_history);
-      __builtin_prefetch(&ahead_of.history[history_ahead]);
-      __builtin_prefetch(&ahead_of.next_history[history_ahead], 1);
+      __builtin_prefetch(&ahead_of.history.tangential[history_ahead]);
+      __builtin_prefetch(&ahead_of.next_history.tangential[history_ahead], 1);
+      if (ahead_of.history.rolling) {  // the same for every pair (the law's choice): predicted
+        __builtin_prefetch(&ahead_of.history.rolling[history_ahead]);
+        __builtin_prefetch(&ahead_of.next_history.rolling[history_ahead], 1);
+      }
       if (count == ContactBatch::kCapacity) {
         at = {i, k + 1};
         next_contact = next;
@@ -139,7 +144,7 @@ std::uint32_t collect_touching(PairCursor& at, std::size_t end, const Vec3* __re
 }
 
 void add_batch_shares(const ContactBatch& __restrict batch, std::uint32_t count, std::size_t end, Vec3* __restrict f,
-                      Vec3* __restrict t, ContactHistory* __restrict history, OwnerSums& sums,
+                      Vec3* __restrict t, const PairHistoryWrite& history, OwnerSums& sums,
                       std::vector<PartnerShare>& later, double& max_overlap) {
   for (std::uint32_t q = 0; q < count; ++q) {
     const std::uint32_t i = batch.owner[q], j = batch.partner[q];
@@ -149,10 +154,10 @@ void add_batch_shares(const ContactBatch& __restrict batch, std::uint32_t count,
       sums = {i, Vec3{}, Vec3{}};
     }
     max_overlap = std::max(max_overlap, batch.overlap_ratio[q]);
-    ContactHistory& h = history[batch.history_out[q]];
-    h.tangential_spring = {batch.spring[0][q], batch.spring[1][q], batch.spring[2][q]};
-    h.rolling_spring = {batch.rolling_spring[0][q], batch.rolling_spring[1][q], batch.rolling_spring[2][q]};
-    h.flags = batch.flags[q];
+    const std::uint32_t out = batch.history_out[q];
+    history.tangential[out] = {{batch.spring[0][q], batch.spring[1][q], batch.spring[2][q]}, batch.flags[q]};
+    if (history.rolling)  // the same for every pair (the law's choice): predicted
+      history.rolling[out] = {batch.rolling_spring[0][q], batch.rolling_spring[1][q], batch.rolling_spring[2][q]};
     const Vec3 force{batch.force[0][q], batch.force[1][q], batch.force[2][q]};
     sums.force += force;
     sums.torque += Vec3{batch.torque_owner[0][q], batch.torque_owner[1][q], batch.torque_owner[2][q]};

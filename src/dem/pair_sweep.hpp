@@ -8,6 +8,7 @@
 #include "dem/batch_lane.hpp"
 #include "dem/contact/law.hpp"
 #include "dem/domain.hpp"
+#include "dem/pair_histories.hpp"
 #include "dem/vec3.hpp"
 
 namespace trapdem {
@@ -36,7 +37,7 @@ struct PartnerShare {
 
 // The law over the batch's first `count` contacts, compiled for the law's choices (law_instance).
 using PairBatchLawFn = void (*)(ContactBatch&, std::uint32_t, const LawParams&, const BodyArrays&,
-                                const ContactHistory*, double);
+                                const PairHistoryRead&, double);
 PairBatchLawFn pair_batch_law(const LawChoices& choices);
 
 // Where collect_touching() stopped: the owner and its next listed pair.
@@ -51,8 +52,8 @@ struct SweepPrefetch {
   const Vec3* angular_velocity;
   const Vec3* force;
   const Vec3* torque;
-  const ContactHistory* history;       // last step's, read by the batch law
-  const ContactHistory* next_history;  // this step's, written by add_batch_shares
+  PairHistoryRead history;        // last step's, read by the batch law
+  PairHistoryWrite next_history;  // this step's, written by add_batch_shares
 };
 
 // The pair list and the compact histories as collect_touching reads and writes them.
@@ -79,7 +80,7 @@ struct OwnerSums {
 // Stores the batch's histories and adds its forces and torques in pair order: the partner's share
 // at once (or, for a partner at or beyond `end`, in `later`), the owner's summed until its last pair.
 void add_batch_shares(const ContactBatch& __restrict batch, std::uint32_t count, std::size_t end, Vec3* __restrict f,
-                      Vec3* __restrict t, ContactHistory* __restrict history, OwnerSums& sums,
+                      Vec3* __restrict t, const PairHistoryWrite& history, OwnerSums& sums,
                       std::vector<PartnerShare>& later, double& max_overlap);
 
 }  // namespace trapdem

@@ -23,6 +23,7 @@ Simulation::Simulation(Particles particles, const ContactLaw& particle_law, Simu
   law_.validate("particle contact law");
   sweep_->particle_params = law_params(law_, law_);
   sweep_->particle_choices = law_choices(law_);
+  contacts_ = contacts_next_ = PairHistories(keeps_rolling_spring(sweep_->particle_choices));
   set_gravity(Vec3{0.0, 0.0, -9.81});
   for (int a = 0; a < 3; ++a) {
     if (!(settings_.domain.upper[a] > settings_.domain.lower[a]))
@@ -108,7 +109,7 @@ void Simulation::add_particle(std::int64_t id, const Vec3& x, double radius, dou
 void Simulation::remove_particles(const std::vector<std::uint32_t>& indices) {
   if (indices.empty()) return;
   if (!history_pending_ && !pairs_.first.empty()) {
-    pending_history_.store_pairs(pairs_, pair_contact_, contacts_.data(), p_.id);
+    pending_history_.store_pairs(pairs_, pair_contact_, contacts_, p_.id);
     pending_history_.store_walls(wall_list_, p_.id);
     history_pending_ = true;
   }
@@ -180,12 +181,10 @@ void Simulation::find_partner_reach() {
 // that has just formed reads its history from.
 void Simulation::size_contact_arrays() {
   const std::size_t needed = pairs_.size() + 1;
-  if (contacts_.size() < needed) {
-    contacts_.resize(needed);
-    contacts_next_.resize(needed);
-  }
-  contacts_[pairs_.size()] = ContactHistory{};
-  contacts_next_[pairs_.size()] = ContactHistory{};
+  contacts_.grow_to(needed);
+  contacts_next_.grow_to(needed);
+  contacts_.set(pairs_.size(), ContactHistory{});
+  contacts_next_.set(pairs_.size(), ContactHistory{});
 }
 
 // The per-listed-pair history of a checkpoint into the compact form.
@@ -195,7 +194,7 @@ void Simulation::compact_pair_history() {
   std::uint32_t found = 0;
   for (std::size_t k = 0; k < pairs_.history.size(); ++k) {
     if (!pairs_.history[k].touching()) continue;
-    contacts_[found] = pairs_.history[k];
+    contacts_.set(found, pairs_.history[k]);
     pair_contact_[k] = found++;
   }
   pairs_.history.clear();
@@ -205,7 +204,7 @@ void Simulation::compact_pair_history() {
 std::vector<ContactHistory> Simulation::pair_history() const {
   std::vector<ContactHistory> history(pairs_.size());
   for (std::size_t k = 0; k < pair_contact_.size(); ++k)
-    if (pair_contact_[k] != kNoContact) history[k] = contacts_[pair_contact_[k]];
+    if (pair_contact_[k] != kNoContact) history[k] = contacts_.get(pair_contact_[k]);
   return history;
 }
 
@@ -247,7 +246,7 @@ void Simulation::rebuild_lists() {
     archive = std::move(pending_history_);
     history_pending_ = false;
   } else {
-    archive.store_pairs(pairs_, pair_contact_, contacts_.data(), p_.id);
+    archive.store_pairs(pairs_, pair_contact_, contacts_, p_.id);
     archive.store_walls(wall_list_, p_.id);
   }
   wrap_periodic(p_, dom);
@@ -280,7 +279,7 @@ void Simulation::rebuild_lists() {
   build_pairs(p_, cells, dom, skin_, pairs_);
   if (ghosts_ > 0) keep_pairs_computed_here(pairs_, owned_count(), p_.id);
   size_contact_arrays();
-  archive.restore_pairs(pairs_, p_.id, pair_contact_, contacts_.data());
+  archive.restore_pairs(pairs_, p_.id, pair_contact_, contacts_);
   build_wall_candidates(p_, owned_count(), walls_, skin_, wall_list_);
   archive.restore_walls(wall_list_, p_.id);
 
@@ -300,7 +299,7 @@ Simulation::ListState Simulation::list_state() const {
 void Simulation::drop_ghosts() {
   if (ghosts_ == 0) return;
   if (!history_pending_ && !pairs_.first.empty()) {
-    pending_history_.store_pairs(pairs_, pair_contact_, contacts_.data(), p_.id);
+    pending_history_.store_pairs(pairs_, pair_contact_, contacts_, p_.id);
     pending_history_.store_walls(wall_list_, p_.id);
     history_pending_ = true;
   }

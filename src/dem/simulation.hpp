@@ -10,6 +10,7 @@
 #include "dem/contact_law.hpp"
 #include "dem/domain.hpp"
 #include "dem/history_archive.hpp"
+#include "dem/pair_histories.hpp"
 #include "dem/pair_list.hpp"
 #include "dem/particles.hpp"
 #include "dem/wall.hpp"
@@ -180,7 +181,7 @@ class Simulation {
   // of the pair list on. The entry at index pairs_.size() of both stays empty: it is where a
   // contact that has just formed reads its history from.
   ContactSlots pair_contact_;
-  std::vector<ContactHistory> contacts_, contacts_next_;
+  PairHistories contacts_, contacts_next_;
   std::vector<ContactHistory> pair_history() const;  // per listed pair, from the compact form
   std::vector<Vec3> position_at_build_;
   std::vector<Vec3> wall_displacement_at_build_;

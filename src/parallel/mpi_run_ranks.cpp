@@ -179,11 +179,7 @@ void MpiRunRanks::save_checkpoint(const std::filesystem::path& path, const Simul
   mine.lists = sim.list_state();
   mine.decomposition = slab_->save_state();
   HistoryArchive histories;
-  ContactSlots slot(mine.lists.pairs.size(), kNoContact);
-  for (std::size_t k = 0; k < slot.size(); ++k)
-    if (mine.lists.pairs.history[k].touching()) slot[k] = std::uint32_t(k);
-  if (!mine.lists.pairs.first.empty())
-    histories.store_pairs(mine.lists.pairs, slot, mine.lists.pairs.history.data(), mine.particles.id);
+  if (!mine.lists.pairs.first.empty()) histories.store_pairs(mine.lists.pairs, mine.particles.id);
   if (!mine.lists.walls.first.empty()) histories.store_walls(mine.lists.walls, mine.particles.id);
   Packer packer;
   packer.put(std::vector<std::uint64_t>{sim.owned_count()});
