@@ -316,8 +316,11 @@ fs::path write_study_report(const fs::path& dir, const StudyReportInput& in) {
                      "{:g} (the paper's Figure 7).</figcaption></figure>\n",
                      image_html(panel, "Panel of maximum shear strain maps, one per case"), vmax);
   } else {
-    h += "<p class=\"note\">No case could be analysed.</p>\n";
+    h += "<p class=\"note\">No case has a figure.</p>\n";
   }
+  for (const StudyCaseResult& c : in.cases)  // the cases left out of the panel, and why
+    if (!c.final_analysis)
+      h += fmt::format("<p class=\"note\">{}: {}</p>\n", markup_escape(c.summary.label), markup_escape(c.missing_note));
 
   h += fmt::format("<h2>Vertical displacement at δ = {}</h2>\n<div class=\"grid\">\n", markup_escape(contours_at));
   for (const StudyCaseResult& c : in.cases) {
@@ -425,7 +428,7 @@ fs::path write_study_report(const fs::path& dir, const StudyReportInput& in) {
                        r.summary.replicate ? std::to_string(r.summary.seed) : "its own", cell(k.particles, "{:.0f}"),
                        duration(k.wall_seconds), cell(k.particle_steps_per_second / 1e6, "{:.2f}"),
                        cell(k.segments, "{:.0f}"), markup_escape(r.run_dir.string()),
-                       r.analysed ? "" : " <span class=\"note\">" + markup_escape(r.missing_note) + "</span>");
+                       r.missing_note.empty() ? "" : " <span class=\"note\">" + markup_escape(r.missing_note) + "</span>");
     }
   }
   h += "</table></div>\n<p class=\"lead\">Run time: wall clock summed over the segments that ended (a first run and "

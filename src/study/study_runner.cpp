@@ -24,6 +24,7 @@
 #include "study/case_element_test.hpp"
 #include "study/parameter_differences.hpp"
 #include "study/run_analysis.hpp"
+#include "study/stored_analysis.hpp"
 #include "study/study_report.hpp"
 
 namespace fs = std::filesystem;
@@ -230,9 +231,25 @@ void run_case_element_test_once(const StudyDefinition& study, const StudyCase& c
 
 namespace {
 
+// The numbers of a run that do not come from its analysis: the ground reaction curve and the
+// sinkhole estimate (from analysis/metrics.json, see sinkhole_run.hpp).
+void read_run_numbers(const StudyCase& c, const CaseRun& run, const StudyReportSettings& report, bool quiet,
+                      CaseSummary& summary) {
+  const RunFolder folder(run.dir);
+  const fs::path csv = folder.trapdoor_csv();
+  if (fs::exists(csv))
+    read_ground_reaction(parse_ground_reaction_csv(read_text_file(csv), csv.string()), summary.trapdoor_width, summary);
+  try {
+    read_sinkhole_comparison(compare_with_dem(read_dem_run(run.dir), report.angle_of_draw_deg), summary);
+  } catch (const InputError& e) {
+    if (!quiet) fmt::print("{}: no sinkhole estimate: {}\n", run_title(c, run), e.what());
+  }
+}
+
 // One finished run analysed (its analysis/ written) and summarised; the analyses are kept in
 // `finals` and `contours` for the report's figures. A run that cannot be analysed (too few
-// particles in view, say) gets a note and does not hide the others.
+// particles in view, say) gets a note and does not hide the others. A finished run whose
+// snapshots are gone is summarised from the analysis it kept (stored_analysis.hpp), without figures.
 StudyRunResult summarise_run(const StudyDefinition& study, const StudyCase& c, const CaseRun& run, bool quiet,
                              plot::FigureFormat format, std::vector<std::unique_ptr<AnalysisResult>>& finals,
                              std::vector<std::unique_ptr<AnalysisResult>>& contours) {
@@ -248,6 +265,15 @@ StudyRunResult summarise_run(const StudyDefinition& study, const StudyCase& c, c
     return r;
   }
   r.summary.cost = read_case_cost(run.dir);
+  if (!folder.has_snapshots()) {
+    const StoredAnalysis stored = stored_final_analysis(folder);
+    r.missing_note = stored.note;
+    if (!stored.metrics) return r;
+    read_mechanism_metrics(*stored.metrics, r.summary);
+    read_run_numbers(c, run, study.report, quiet, r.summary);
+    r.analysed = true;
+    return r;
+  }
   AnalyzeOptions a;
   a.dir = run.dir.string();
   a.quiet = true;
@@ -272,15 +298,7 @@ StudyRunResult summarise_run(const StudyDefinition& study, const StudyCase& c, c
   } catch (const InputError& e) {
     r.missing_note = fmt::format("no contours at {}: {}", format_mm(study.report.contours_at), e.what());
   }
-  const fs::path csv = folder.trapdoor_csv();
-  if (fs::exists(csv))
-    read_ground_reaction(parse_ground_reaction_csv(read_text_file(csv), csv.string()), r.summary.trapdoor_width,
-                         r.summary);
-  try {
-    read_sinkhole_comparison(compare_with_dem(read_dem_run(run.dir), study.report.angle_of_draw_deg), r.summary);
-  } catch (const InputError& e) {
-    if (!quiet) fmt::print("{}: no sinkhole estimate: {}\n", run_title(c, run), e.what());
-  }
+  read_run_numbers(c, run, study.report, quiet, r.summary);
   r.analysed = true;
   return r;
 }
@@ -307,12 +325,12 @@ fs::path write_study_outputs(const StudyDefinition& study, const StudyScale& sca
       const StudyRunResult& last = r.runs.back();
       if (!last.analysed) continue;
       analysed.push_back(last.summary);
-      if (!r.final_analysis) {  // the figures show the first analysed run
+      if (!r.final_analysis) {  // the figures show the first analysed run that has them
         r.final_analysis = last.final_analysis;
         r.contour_analysis = last.contour_analysis;
         r.figure_run = last.run_dir;
         r.parameters = resolved_parameters(last.run_dir);
-        if (!last.contour_analysis) r.missing_note = last.missing_note;
+        r.missing_note = last.contour_analysis ? "" : last.missing_note;
       }
     }
     if (analysed.empty()) {

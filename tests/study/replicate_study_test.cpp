@@ -1,7 +1,8 @@
 // A tiny study of two cases with two packing seeds each and the element test: each replicate in its
 // own folder with its seed in resolved.toml, the report's means and spreads equal to a hand
 // computation from the replicates' own analyses, the findings' wording following the trend rule,
-// the element test's angles in the metrics, and a second call that runs nothing.
+// the element test's angles in the metrics, a second call that runs nothing, and reports made after
+// runs' snapshots were deleted.
 #include <gtest/gtest.h>
 #include <unistd.h>
 
@@ -185,6 +186,47 @@ void ASecondCallSkipsEveryFinishedReplicateAndElementTest() {
   EXPECT_EQ(read_text_file(out() / "report" / "case_summary.csv"), before);
 }
 
+// Snapshots are most of a run's size and what gets deleted or left on the cluster; the light results
+// keep analysis/metrics.json. A report made without them takes each run's numbers from there (the
+// same numbers), draws no figure of it and says why; a metrics.json of another analysis than the
+// report's (here one at 2 mm of travel) is not taken for it: the run is left out, the key named.
+void ARunWhoseSnapshotsAreGoneIsReportedFromItsStoredAnalysis() {
+  const std::string before = read_text_file(out() / "report" / "case_summary.csv");
+  for (int s = 0; s < 2; ++s) ASSERT_TRUE(fs::remove(run_dir(0, s) / "snapshots.h5"));
+  app::StudyOptions report_only = options();
+  report_only.report_only = true;
+  ASSERT_EQ(app::run_study(report_only), 0);
+  EXPECT_EQ(read_text_file(out() / "report" / "case_summary.csv"), before);
+  const Json s = summary();
+  for (int r = 0; r < 2; ++r) EXPECT_TRUE(s["cases"][0]["runs"][r]["analysed"].as_bool());
+  std::string page = read_text_file(out() / "report" / "index.html");
+  const std::string note = "Smooth: no figures: snapshots.h5 is gone; the numbers are from ";
+  EXPECT_NE(page.find(note), std::string::npos) << page;
+  EXPECT_EQ(page.find("contours_smooth.png"), std::string::npos);
+  EXPECT_NE(page.find("contours_rough.png"), std::string::npos);
+  EXPECT_NE(page.find("strain_panel.png"), std::string::npos);  // Rough's panel
+
+  const fs::path metrics = run_dir(1, 0) / "analysis" / "metrics.json";
+  std::string text = read_text_file(metrics);
+  const std::string final_snapshot = "\"at_requested_m\": null";
+  ASSERT_NE(text.find(final_snapshot), std::string::npos) << text;
+  text.replace(text.find(final_snapshot), final_snapshot.size(), "\"at_requested_m\": 0.002");
+  std::ofstream(metrics) << text;
+  ASSERT_TRUE(fs::remove(run_dir(1, 0) / "snapshots.h5"));
+  ASSERT_EQ(app::run_study(report_only), 0);
+  const Json t = summary();
+  const Json& rough = t["cases"][1];
+  EXPECT_EQ(rough["n"].as_number(), 1.0);
+  EXPECT_FALSE(rough["runs"][0]["analysed"].as_bool());
+  EXPECT_TRUE(rough["runs"][1]["analysed"].as_bool());
+  const Json kept = read_json(run_dir(1, 1) / "analysis" / "metrics.json");
+  EXPECT_EQ(rough["zone_surface_m"].as_number(),
+            json_number_or_nan(json_member_or_null(kept, "zone_of_influence"), "surface_width_m"));
+  page = read_text_file(out() / "report" / "index.html");
+  EXPECT_NE(page.find("inputs.at_requested_m (0.002; the report analyses the last snapshot)"), std::string::npos)
+      << page;
+}
+
 }  // namespace
 
 // One study, run once (each check below would otherwise run it again: gtest_discover_tests runs
@@ -213,6 +255,10 @@ TEST(ReplicateStudy, TwoCasesTwoSeedsAndTheElementTest) {
   {
     SCOPED_TRACE("ASecondCallSkipsEveryFinishedReplicateAndElementTest");
     ASecondCallSkipsEveryFinishedReplicateAndElementTest();
+  }
+  {
+    SCOPED_TRACE("ARunWhoseSnapshotsAreGoneIsReportedFromItsStoredAnalysis");
+    ARunWhoseSnapshotsAreGoneIsReportedFromItsStoredAnalysis();
   }
   fs::remove_all(study_dir());
 }

@@ -1,0 +1,115 @@
+// The analysis a finished run keeps after its snapshots are gone (study/stored_analysis.hpp): taken
+// when it is the report's own analysis, refused with the key named when any input differs. The
+// folder is made by hand: resolved.toml with the trapdoor's travel (3 mm) and a metrics.json with the
+// inputs the analysis writes for 2 mm beads (1.5 x 2.1 mm front depth, half of 2.0 mm grid).
+#include <gtest/gtest.h>
+#include <unistd.h>
+
+#include <filesystem>
+#include <fstream>
+#include <string>
+
+#include "study/stored_analysis.hpp"
+
+namespace fs = std::filesystem;
+using namespace trapdem;
+
+namespace {
+
+// Each input as the report's analysis writes it; a test replaces one.
+struct Inputs {
+  std::string at_m = "0.00300002";
+  std::string at_requested_m = "null";
+  std::string reference_requested_m = "0";
+  std::string view = "\"front\"";
+  std::string front_depth_m = "0.00315";    // 1.5 x max_diameter_m
+  std::string incremental = "false";
+  std::string grid_spacing_m = "0.001";     // 0.5 x mean_diameter_m
+  std::string smoothing_diameters = "2";
+};
+
+fs::path run_folder(const Inputs& in) {
+  const fs::path dir = fs::temp_directory_path() / ("trapdem-stored-analysis-" + std::to_string(::getpid()));
+  fs::remove_all(dir);
+  fs::create_directories(dir / "analysis");
+  std::ofstream(dir / "resolved.toml") << "name = \"hand\"\n[box]\nwidth = 0.1\ndepth = 0.01\nheight = 0.1\n"
+                                          "[trapdoor]\nwidth = 0.02\ncentre = 0.05\ntravel = 0.003\n";
+  std::ofstream(dir / "analysis" / "metrics.json")
+      << "{\"inputs\": {\"at_m\": " << in.at_m << ", \"reference_m\": 0, \"at_requested_m\": " << in.at_requested_m
+      << ", \"reference_requested_m\": " << in.reference_requested_m << ", \"view\": " << in.view
+      << ", \"front_depth_m\": " << in.front_depth_m << ", \"incremental\": " << in.incremental
+      << ", \"grid_spacing_m\": " << in.grid_spacing_m << "},\n"
+      << " \"particles\": {\"mean_diameter_m\": 0.002, \"max_diameter_m\": 0.0021},\n"
+      << " \"shear_bands\": {\"smoothing_diameters\": " << in.smoothing_diameters << "},\n"
+      << " \"zone_of_influence\": {\"surface_width_m\": 0.04}}\n";
+  return dir;
+}
+
+std::string refusal(const Inputs& in) {
+  const fs::path dir = run_folder(in);
+  const StoredAnalysis s = stored_final_analysis(RunFolder(dir));
+  fs::remove_all(dir);
+  EXPECT_FALSE(s.metrics.has_value()) << s.note;
+  return s.note;
+}
+
+}  // namespace
+
+TEST(StoredAnalysis, TheReportsOwnAnalysisIsTakenAndSaysWhereTheNumbersCameFrom) {
+  const fs::path dir = run_folder(Inputs{});
+  const StoredAnalysis s = stored_final_analysis(RunFolder(dir));
+  ASSERT_TRUE(s.metrics.has_value()) << s.note;
+  EXPECT_EQ((*s.metrics)["zone_of_influence"]["surface_width_m"].as_number(), 0.04);
+  EXPECT_EQ(s.note, "no figures: snapshots.h5 is gone; the numbers are from " + (dir / "analysis" / "metrics.json").string());
+  fs::remove_all(dir);
+}
+
+TEST(StoredAnalysis, AnyOtherAnalysisIsRefusedNamingTheKey) {
+  const auto names = [](const std::string& note, const std::string& key) {
+    EXPECT_NE(note.find("is another analysis than the report's: " + key), std::string::npos) << note;
+  };
+  Inputs in;
+  in.at_requested_m = "0.002";
+  names(refusal(in), "inputs.at_requested_m (0.002; the report analyses the last snapshot)");
+  in = Inputs{};
+  in.reference_requested_m = "0.001";
+  names(refusal(in), "inputs.reference_requested_m (0.001;");
+  in = Inputs{};
+  in.view = "\"all\"";
+  names(refusal(in), "inputs.view (expected \"front\")");
+  in = Inputs{};
+  in.incremental = "true";
+  names(refusal(in), "inputs.incremental");
+  in = Inputs{};
+  in.front_depth_m = "0.005";
+  names(refusal(in), "inputs.front_depth_m");
+  in = Inputs{};
+  in.grid_spacing_m = "0.002";
+  names(refusal(in), "inputs.grid_spacing_m");
+  in = Inputs{};
+  in.smoothing_diameters = "0";
+  names(refusal(in), "shear_bands.smoothing_diameters (expected the default 2)");
+  // Written at 2 mm of a run that then went on to 3 mm: not the last snapshot (2 % tolerance).
+  in = Inputs{};
+  in.at_m = "0.002";
+  names(refusal(in), "inputs.at_m (2 mm; the run ends at 3 mm)");
+  Inputs within;  // 2 % of 3 mm
+  within.at_m = "0.00306";
+  const fs::path dir = run_folder(within);
+  EXPECT_TRUE(stored_final_analysis(RunFolder(dir)).metrics.has_value());
+  fs::remove_all(dir);
+}
+
+TEST(StoredAnalysis, AMissingOrBrokenFileIsANoteNotACrash) {
+  fs::path dir = run_folder(Inputs{});
+  const fs::path metrics = dir / "analysis" / "metrics.json";
+  std::ofstream(metrics) << "{\"inputs\": ";
+  StoredAnalysis s = stored_final_analysis(RunFolder(dir));
+  EXPECT_FALSE(s.metrics.has_value());
+  EXPECT_NE(s.note.find(metrics.string() + " cannot be read: " + metrics.string()), std::string::npos) << s.note;
+  fs::remove(metrics);
+  s = stored_final_analysis(RunFolder(dir));
+  EXPECT_FALSE(s.metrics.has_value());
+  EXPECT_EQ(s.note, "not analysed: snapshots.h5 is missing and so is " + metrics.string());
+  fs::remove_all(dir);
+}
