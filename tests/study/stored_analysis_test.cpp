@@ -65,35 +65,29 @@ TEST(StoredAnalysis, TheReportsOwnAnalysisIsTakenAndSaysWhereTheNumbersCameFrom)
 }
 
 TEST(StoredAnalysis, AnyOtherAnalysisIsRefusedNamingTheKey) {
-  const auto names = [](const std::string& note, const std::string& key) {
-    EXPECT_NE(note.find("is another analysis than the report's: " + key), std::string::npos) << note;
+  struct Change {
+    std::string Inputs::*input;
+    std::string value;
+    std::string named;  // what the note says after "is another analysis than the report's: "
   };
-  Inputs in;
-  in.at_requested_m = "0.002";
-  names(refusal(in), "inputs.at_requested_m (0.002; the report analyses the last snapshot)");
-  in = Inputs{};
-  in.reference_requested_m = "0.001";
-  names(refusal(in), "inputs.reference_requested_m (0.001;");
-  in = Inputs{};
-  in.view = "\"all\"";
-  names(refusal(in), "inputs.view (expected \"front\")");
-  in = Inputs{};
-  in.incremental = "true";
-  names(refusal(in), "inputs.incremental");
-  in = Inputs{};
-  in.front_depth_m = "0.005";
-  names(refusal(in), "inputs.front_depth_m");
-  in = Inputs{};
-  in.grid_spacing_m = "0.002";
-  names(refusal(in), "inputs.grid_spacing_m");
-  in = Inputs{};
-  in.smoothing_diameters = "0";
-  names(refusal(in), "shear_bands.smoothing_diameters (expected the default 2)");
-  // Written at 2 mm of a run that then went on to 3 mm: not the last snapshot (2 % tolerance).
-  in = Inputs{};
-  in.at_m = "0.002";
-  names(refusal(in), "inputs.at_m (2 mm; the run ends at 3 mm)");
-  Inputs within;  // 2 % of 3 mm
+  const Change changes[] = {
+      {&Inputs::at_requested_m, "0.002", "inputs.at_requested_m (0.002; the report analyses the last snapshot)"},
+      {&Inputs::reference_requested_m, "0.001", "inputs.reference_requested_m (0.001;"},
+      {&Inputs::view, "\"all\"", "inputs.view (expected \"front\")"},
+      {&Inputs::incremental, "true", "inputs.incremental"},
+      {&Inputs::front_depth_m, "0.005", "inputs.front_depth_m"},
+      {&Inputs::grid_spacing_m, "0.002", "inputs.grid_spacing_m"},
+      {&Inputs::smoothing_diameters, "0", "shear_bands.smoothing_diameters (expected the default 2)"},
+      // Written at 2 mm of a run that then went on to 3 mm: not the last snapshot.
+      {&Inputs::at_m, "0.002", "inputs.at_m (2 mm; the run ends at 3 mm)"},
+  };
+  for (const Change& change : changes) {
+    Inputs in;
+    in.*change.input = change.value;
+    const std::string note = refusal(in);
+    EXPECT_NE(note.find("is another analysis than the report's: " + change.named), std::string::npos) << note;
+  }
+  Inputs within;  // the analysis' own tolerance: 2 % of 3 mm
   within.at_m = "0.00306";
   const fs::path dir = run_folder(within);
   EXPECT_TRUE(stored_final_analysis(RunFolder(dir)).metrics.has_value());
