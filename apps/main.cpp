@@ -20,6 +20,29 @@
 #include "sinkhole_command.hpp"
 #include "study_command.hpp"
 
+namespace {
+
+// --submit and the Slurm options of `study` and `calibrate`: --partition, --time, --cpus-per-task
+// and --sbatch-arg need --submit.
+void add_submit_options(CLI::App& command, trapdem::app::SubmitOptions& o) {
+  auto* submit = command.add_option("--submit", o.submit,
+                                    "slurm: submit the runs not finished as a Slurm job array and the report as a job "
+                                    "after it (docs/study.md, On a cluster)")
+                     ->check(CLI::IsMember({"slurm"}));
+  command.add_option("--partition", o.slurm.partition, "With --submit: the Slurm partition (default: the cluster's)")
+      ->needs(submit);
+  command.add_option("--time", o.slurm.time, "With --submit: each task's time limit, e.g. 12:00:00 or 2-00:00:00")
+      ->needs(submit);
+  command.add_option("--cpus-per-task", o.slurm.cpus_per_task, "With --submit: CPUs (threads) of each run (default 1)")
+      ->needs(submit);
+  command.add_option("--sbatch-arg", o.slurm.sbatch_args,
+                     "With --submit: another sbatch option for both jobs, e.g. --sbatch-arg=--account=geo (repeatable)")
+      ->needs(submit)
+      ->allow_extra_args(false);
+}
+
+}  // namespace
+
 int main(int argc, char** argv) {
   CLI::App app{"trapdem: trapdoor experiments with the discrete element method"};
   // Every --threads: 0 (all cores) up to trapdem::kMaxThreads, with a message that says so (CLI11's
@@ -194,7 +217,7 @@ int main(int argc, char** argv) {
   study_cmd->add_flag("--collect", study.collect, "No trapdoor run: the element tests still missing, then the report (a Slurm submission's report job)");
   study_cmd->add_flag("--status", study.status, "Run nothing: where each run stands (not started, running, finished, failed)");
   study_cmd->add_option("--format", study.format, "Figure format of the report and the runs' analyses: png (default), svg or pdf")->check(CLI::IsMember({"png", "svg", "pdf"}, CLI::ignore_case));
-  trapdem::app::add_submit_options(*study_cmd, study.submit);
+  add_submit_options(*study_cmd, study.submit);
 
   trapdem::app::CalibrateCommand calibrate_command;
   trapdem::CalibrateOptions& calibrate = calibrate_command.calibrate;
@@ -212,7 +235,7 @@ int main(int argc, char** argv) {
   cal->add_flag("--collect", calibrate.collect, "Run nothing: rank the grid once every case has finished (a Slurm submission's report job)");
   cal->add_flag("--status", calibrate_command.status, "Run nothing: where each case stands");
   cal->add_option("--format", calibrate.format, "Figure format: png (default), svg or pdf")->check(CLI::IsMember({"png", "svg", "pdf"}, CLI::ignore_case));
-  trapdem::app::add_submit_options(*cal, calibrate_command.submit);
+  add_submit_options(*cal, calibrate_command.submit);
 
   trapdem::app::ElementOptions element;
   auto* el = app.add_subcommand("element", "Virtual element test: friction angles of a configuration's particles (docs/element.md)");

@@ -2,7 +2,6 @@
 
 #include <filesystem>
 
-#include <CLI/CLI.hpp>
 #include <fmt/format.h>
 
 #include "core/errors.hpp"
@@ -18,23 +17,6 @@
 namespace fs = std::filesystem;
 
 namespace trapdem::app {
-
-void add_submit_options(CLI::App& command, SubmitOptions& o) {
-  auto* submit = command.add_option("--submit", o.submit,
-                                    "slurm: submit the runs not finished as a Slurm job array and the report as a job "
-                                    "after it (docs/study.md, On a cluster)")
-                     ->check(CLI::IsMember({"slurm"}));
-  command.add_option("--partition", o.slurm.partition, "With --submit: the Slurm partition (default: the cluster's)")
-      ->needs(submit);
-  command.add_option("--time", o.slurm.time, "With --submit: each task's time limit, e.g. 12:00:00 or 2-00:00:00")
-      ->needs(submit);
-  command.add_option("--cpus-per-task", o.slurm.cpus_per_task, "With --submit: CPUs (threads) of each run (default 1)")
-      ->needs(submit);
-  command.add_option("--sbatch-arg", o.slurm.sbatch_args,
-                     "With --submit: another sbatch option for both jobs, e.g. --sbatch-arg=--account=geo (repeatable)")
-      ->needs(submit)
-      ->allow_extra_args(false);
-}
 
 fs::path this_program() {
   std::error_code ec;

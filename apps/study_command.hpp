@@ -8,10 +8,6 @@
 
 #include "study/slurm_options.hpp"
 
-namespace CLI {
-class App;
-}
-
 namespace trapdem::app {
 
 // --submit and the Slurm options, shared by `study` and `calibrate`.
@@ -19,10 +15,6 @@ struct SubmitOptions {
   std::string submit;         // "slurm", or empty: run here
   SlurmOptions slurm;
 };
-
-// Adds --submit, --partition, --time, --cpus-per-task and --sbatch-arg to a command (the last four
-// need --submit).
-void add_submit_options(CLI::App& command, SubmitOptions& options);
 
 struct StudyOptions {
   std::string file;           // the study file
