@@ -1,5 +1,6 @@
 #include "study/stored_analysis.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <filesystem>
 
