@@ -170,9 +170,9 @@ std::string metrics_csv(const StudyReportInput& in) {
       s.phi_peak_deg = c.summary.phi_peak_deg;
       s.phi_cs_deg = c.summary.phi_cs_deg;
       // Appended piece by piece: `out += a + "," + b` trips GCC 12's false -Wrestrict (GCC bug 105651).
-      out += s.name;
+      out += csv_field(s.name);
       out += ',';
-      out += s.label;
+      out += csv_field(s.label);
       out += ',';
       if (s.replicate) out += std::to_string(s.seed);
       for (const SummaryMetric& m : summary_metrics()) {
@@ -180,7 +180,7 @@ std::string metrics_csv(const StudyReportInput& in) {
         out += csv_number(s.*m.field);
       }
       out += ',';
-      out += s.shape;
+      out += csv_field(s.shape);
       out += ',';
       out += std::to_string(s.warnings.size());
       for (double x : {s.cost.wall_seconds, s.cost.particle_steps_per_second, s.cost.particles}) {
@@ -205,7 +205,8 @@ std::string case_summary_csv(const StudyReportInput& in) {
   for (const StudyCaseResult& c : in.cases) {
     for (const SummaryMetric& m : summary_metrics()) {
       const Spread s = case_metric_spread(c, m.field);
-      out += fmt::format("{},{},{},{},{},{},{},{}\n", c.summary.name, c.summary.label, m.key, s.n, csv_number(s.mean),
+      out += fmt::format("{},{},{},{},{},{},{},{}\n", csv_field(c.summary.name), csv_field(c.summary.label), m.key, s.n,
+                         csv_number(s.mean),
                          csv_number(s.sd), csv_number(s.min), csv_number(s.max));
     }
   }
