@@ -137,9 +137,9 @@ TEST(StudyDefinition, ThePaperStudyIsTable2) {
   EXPECT_DOUBLE_EQ(s.report.contours_at, 0.01);
 }
 
-// Every case of the paper study resolves and validates at both scales (what the study checks before
+// Every case of the paper study resolves and validates at every scale (what the study checks before
 // its first run), and at the paper scale each case is its paper preset: the same contact law.
-TEST(StudyDefinition, ThePaperStudyResolvesAtBothScales) {
+TEST(StudyDefinition, ThePaperStudyResolvesAtEveryScale) {
   const StudyDefinition s = load_study(fs::path(TRAPDEM_SOURCE_DIR) / "studies" / "paper-table2.toml");
   const std::vector<std::string> presets = {"paper-calibrated", "paper-rf1", "paper-rf2", "paper-rf3"};
   for (std::size_t k = 0; k < s.cases.size(); ++k) {
@@ -163,6 +163,15 @@ TEST(StudyDefinition, ThePaperStudyResolvesAtBothScales) {
     for (const char* key : {"contact.normal_stiffness", "numerics.time_step_fraction", "pluviation.flow_rate",
                             "trapdoor.rate"})
       EXPECT_EQ(as_preset.require_value_text(key), preset.require_value_text(key)) << presets[k] << " " << key;
+    // paper-fast is `paper` with two more of them (a longer step, a faster rain) and nothing else changed.
+    Config fast =
+        Config::parse(resolved_case_configuration(s.cases[k], s.scale("paper-fast"), app::preset_directory()), "study");
+    EXPECT_DOUBLE_EQ(fast.get_double("numerics.time_step_fraction", 0.0), 0.4);
+    EXPECT_DOUBLE_EQ(fast.get_double("pluviation.drop_height", 0.0), 0.08);
+    for (const char* key : {"contact.normal_stiffness", "contact.tangential_stiffness", "contact.static_friction",
+                            "contact.kinetic_friction", "contact.rolling_friction", "pluviation.flow_rate",
+                            "pluviation.count", "trapdoor.rate", "trapdoor.travel", "spin_up.g_level"})
+      EXPECT_EQ(fast.require_value_text(key), study_case.require_value_text(key)) << presets[k] << " " << key;
   }
 }
 
