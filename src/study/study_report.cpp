@@ -206,8 +206,7 @@ std::string case_summary_csv(const StudyReportInput& in) {
     for (const SummaryMetric& m : summary_metrics()) {
       const Spread s = case_metric_spread(c, m.field);
       out += fmt::format("{},{},{},{},{},{},{},{}\n", csv_field(c.summary.name), csv_field(c.summary.label), m.key, s.n,
-                         csv_number(s.mean),
-                         csv_number(s.sd), csv_number(s.min), csv_number(s.max));
+                         csv_number(s.mean), csv_number(s.sd), csv_number(s.min), csv_number(s.max));
     }
   }
   return out;
