@@ -17,6 +17,7 @@
 #include "experiment/ground_reaction.hpp"
 #include "experiment/presets.hpp"
 #include "experiment/run_folder.hpp"
+#include "experiment/run_identity.hpp"
 #include "experiment/run_record.hpp"
 #include "io/atomic_file.hpp"
 #include "io/config.hpp"
@@ -39,17 +40,23 @@ fs::path base_file(const ConfigRecipe& recipe, const fs::path& presets) {
 
 fs::path study_record(const fs::path& out) { return out / "study.json"; }
 
-// The first line where two resolved configurations differ, for the message.
-std::string first_difference(const std::string& a, const std::string& b) {
-  std::size_t line = 1, pos_a = 0, pos_b = 0;
-  while (pos_a < a.size() || pos_b < b.size()) {
-    const std::size_t end_a = std::min(a.find('\n', pos_a), a.size()), end_b = std::min(b.find('\n', pos_b), b.size());
-    const std::string la = a.substr(pos_a, end_a - pos_a), lb = b.substr(pos_b, end_b - pos_b);
-    if (la != lb) return fmt::format("line {}: '{}' there, '{}' now", line, la, lb);
-    pos_a = end_a + 1;
-    pos_b = end_b + 1;
-    ++line;
+// How the configuration of a run folder differs from the case's now ("" where it does not): its
+// resolved.toml read again by this trapdem, as a resume reads it, and compared key by key. So a key
+// added to trapdem since the run, which comes in at its default (a new key's default keeps the old
+// behaviour), and the description (text for people) do not cost a study its finished runs; a value
+// that differs, or a key this trapdem no longer reads, does.
+std::string configuration_change(const RunFolder& run, const std::string& resolved_now) {
+  if (!fs::exists(run.resolved_toml())) return "it has no resolved.toml";
+  std::string there;
+  try {
+    Config config = Config::load_file(run.resolved_toml().string());
+    (void)ExperimentConfig::from(config);  // fills in the keys added since, and checks the rest
+    there = config.resolved_toml();
+  } catch (const InputError& e) {
+    return fmt::format("its resolved.toml does not read as a configuration of this trapdem: {}", e.what());
   }
+  for (const ConfigChange& c : config_changes(there, resolved_now))
+    if (c.key != "description") return fmt::format("{} is {} there, {} now", c.key, c.before, c.after);
   return "";
 }
 
@@ -153,11 +160,11 @@ std::vector<std::vector<CaseRun>> checked_study_runs(const StudyDefinition& stud
       const std::string resolved = resolved_recipe(r.recipe, preset_directory, c.name, nullptr);
       const RunFolder run(r.dir);
       if (!run.has_checkpoint() && !run_finished(run)) continue;
-      const std::string there = fs::exists(run.resolved_toml()) ? read_text_file(run.resolved_toml()) : "";
-      if (there != resolved)
+      const std::string change = configuration_change(run, resolved);
+      if (!change.empty())
         throw InputError(fmt::format("{}: holds a run of another configuration than case '{}' now has ({}); remove "
                                      "the folder to run the case again, or choose another --out",
-                                     r.dir.string(), c.name, first_difference(there, resolved)));
+                                     r.dir.string(), c.name, change));
     }
     if (study.report.element_test) {  // its keys checked now too
       const ConfigRecipe recipe = case_recipe(c, scale);

@@ -1,6 +1,8 @@
 // A study end to end on two tiny cases: the report and its page (opened in headless Chromium), a
 // study killed during its second case and started again (same numbers as one that ran straight
-// through), and a case whose configuration changed under a finished run (refused).
+// through), a case whose configuration changed under a finished run (refused), and finished runs
+// of an older trapdem (a key added since, another description: kept; another value, a retired key:
+// refused).
 #include <gtest/gtest.h>
 #include <omp.h>
 #include <signal.h>
@@ -13,6 +15,7 @@
 #include <sstream>
 #include <filesystem>
 #include <fstream>
+#include <functional>
 #include <regex>
 #include <thread>
 
@@ -335,6 +338,75 @@ TEST_F(StudyRun, ACaseWhoseConfigurationChangedIsRefused) {
     EXPECT_NE(what.find("kinetic_friction"), std::string::npos) << what;
   }
   fs::remove_all(dir);
+}
+
+// A finished study's folder copied, with `edit` applied to the smooth case's resolved.toml: what
+// a finished run made by an older trapdem looks like to this one.
+fs::path copy_with_edited_smooth_case(const fs::path& study_out, const fs::path& dir,
+                                      const std::function<void(std::string&)>& edit) {
+  const fs::path copy = dir / "out";
+  fs::copy(study_out, copy, fs::copy_options::recursive);
+  const fs::path resolved = copy / "cases" / "smooth" / "resolved.toml";
+  std::string text = read_text_file(resolved);
+  edit(text);
+  std::ofstream(resolved, std::ios::trunc) << text;
+  return copy;
+}
+
+void erase_line(std::string& text, const std::string& line) {
+  const std::size_t at = text.find("\n" + line + "\n");
+  ASSERT_NE(at, std::string::npos) << line;
+  text.erase(at + 1, line.size() + 1);
+}
+
+// A key added to trapdem since the run (absent from its resolved.toml, at its default now) and
+// another description: the same run, skipped as finished.
+TEST_F(StudyRun, AFinishedRunWithoutANewKeyOrWithAnotherDescriptionIsKept) {
+  const fs::path dir = scratch("older");
+  const fs::path copy = copy_with_edited_smooth_case(out(), dir, [](std::string& text) {
+    erase_line(text, "poisson_ratio = 0.3");  // tiny leaves it at its default
+    const std::size_t at = text.find("\ndescription = ");
+    ASSERT_NE(at, std::string::npos);
+    text.replace(at + 1, text.find('\n', at + 1) - at - 1, "description = \"worded otherwise\"");
+  });
+  app::StudyOptions o;
+  o.file = write_study_file(dir).string();
+  o.out = copy.string();
+  o.threads = 1;
+  o.quiet = true;
+  ASSERT_EQ(app::run_study(o), 0);
+  const std::string log = read_text_file(copy / "study.log");
+  EXPECT_NE(log.find("[1/2] smooth: finished before, skipped"), std::string::npos) << log;
+  EXPECT_NE(log.find("[2/2] rough: finished before, skipped"), std::string::npos) << log;
+  fs::remove_all(dir);
+}
+
+// A value that differs, or a key this trapdem does not read (one removed since): refused, named.
+TEST_F(StudyRun, AFinishedRunWithAnotherValueOrAnUnknownKeyIsRefused) {
+  const std::vector<std::pair<std::function<void(std::string&)>, std::string>> edits = {
+      {[](std::string& t) { t.replace(t.find("poisson_ratio = 0.3"), 19, "poisson_ratio = 0.2"); },
+       "contact.poisson_ratio is 0.2 there, 0.3 now"},
+      {[](std::string& t) { t.replace(t.find("poisson_ratio = 0.3"), 19, "poisson_ratio = 0.3\nretired_key = 1"); },
+       "unknown key contact.retired_key"},
+  };
+  for (const auto& [edit, expected] : edits) {
+    const fs::path dir = scratch("older-refused");
+    const fs::path copy = copy_with_edited_smooth_case(out(), dir, edit);
+    app::StudyOptions o;
+    o.file = write_study_file(dir).string();
+    o.out = copy.string();
+    o.threads = 1;
+    o.quiet = true;
+    try {
+      app::run_study(o);
+      ADD_FAILURE() << "expected an error for " << expected;
+    } catch (const InputError& e) {
+      const std::string what = e.what();
+      EXPECT_NE(what.find("another configuration than case 'smooth'"), std::string::npos) << what;
+      EXPECT_NE(what.find(expected), std::string::npos) << what;
+    }
+    fs::remove_all(dir);
+  }
 }
 
 TEST_F(StudyRun, AnotherScaleInTheSameFolderIsRefused) {
