@@ -146,6 +146,9 @@ TEST(StudyDefinition, ThePaperStudyResolvesAtEveryScale) {
     for (const StudyScale& scale : s.scales) {
       Config resolved = Config::parse(resolved_case_configuration(s.cases[k], scale, app::preset_directory()), s.cases[k].name);
       EXPECT_EQ(resolved.get_string("name", ""), s.cases[k].name);
+      // Its own description, not the base's (which names Calibrated in every case at the paper scales).
+      EXPECT_EQ(resolved.get_string("description", "").find("Table 2 case " + s.cases[k].label + ":"), 0u)
+          << s.cases[k].name << " at " << scale.name;
     }
     Config study_case = Config::parse(resolved_case_configuration(s.cases[k], s.scale("paper"), app::preset_directory()), "study");
     Config preset = Config::load_file((app::preset_directory() / (presets[k] + ".toml")).string());
