@@ -5,21 +5,29 @@
 # analysis/metrics.json where they exist. Snapshots, checkpoints and analysis fields stay behind
 # (megabytes a run; the run folder keeps them).
 #
-#   scripts/publish-study.sh STUDY_DIR DEST_DIR [--finished-only]
+#   scripts/publish-study.sh STUDY_DIR DEST_DIR [--finished-only] [--figures]
 #
-# --finished-only: runs whose run.json does not say "complete": true are left out. DEST_DIR's
-# files are replaced one by one (a file that is no longer in the study stays: remove DEST_DIR first
-# for an exact copy).
+# --finished-only: runs whose run.json does not say "complete": true are left out.
+# --figures: each run's analysis figures too (analysis/*.png, .svg, .pdf: ~1 MB a run), for runs
+#   whose snapshots will not outlive their machine: the report draws no figure of a run without
+#   them (docs/study.md), so these are then the only pictures of it.
+# DEST_DIR's files are replaced one by one (a file that is no longer in the study stays: remove
+# DEST_DIR first for an exact copy).
 set -euo pipefail
-usage() { echo "usage: $0 STUDY_DIR DEST_DIR [--finished-only]" >&2; exit 2; }
-[ $# -ge 2 ] && [ $# -le 3 ] || usage
+usage() { echo "usage: $0 STUDY_DIR DEST_DIR [--finished-only] [--figures]" >&2; exit 2; }
+[ $# -ge 2 ] || usage
 study=$1
 dest=$2
+shift 2
 finished_only=0
-if [ $# -eq 3 ]; then
-  [ "$3" = --finished-only ] || usage
-  finished_only=1
-fi
+figures=0
+for option in "$@"; do
+  case $option in
+    --finished-only) finished_only=1 ;;
+    --figures) figures=1 ;;
+    *) usage ;;
+  esac
+done
 [ -d "$study/cases" ] || { echo "$0: $study holds no study (no cases/ folder)" >&2; exit 1; }
 mkdir -p "$dest"
 
@@ -38,6 +46,11 @@ while IFS= read -r -d '' resolved; do
   if [ -f "$run/analysis/metrics.json" ]; then
     mkdir -p "$dest/$rel/analysis"
     cp "$run/analysis/metrics.json" "$dest/$rel/analysis/metrics.json"
+  fi
+  if [ $figures -eq 1 ] && [ -d "$run/analysis" ]; then
+    mkdir -p "$dest/$rel/analysis"
+    find "$run/analysis" -maxdepth 1 -type f \( -name '*.png' -o -name '*.svg' -o -name '*.pdf' \) \
+      -exec cp {} "$dest/$rel/analysis/" \;
   fi
   copied=$((copied + 1))
 done < <(find "$study/cases" -name resolved.toml -print0 | sort -z)
