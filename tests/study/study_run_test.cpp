@@ -51,6 +51,16 @@ fs::path write_study_file(const fs::path& dir, const std::string& text = kStudy)
   return file;
 }
 
+// The study in `file` into `out` on one thread (bitwise reproducible), quietly.
+app::StudyOptions one_thread_study(const fs::path& file, const fs::path& out) {
+  app::StudyOptions o;
+  o.file = file.string();
+  o.out = out.string();
+  o.threads = 1;
+  o.quiet = true;
+  return o;
+}
+
 Json summary_of(const fs::path& out) {
   const fs::path file = out / "report" / "summary.json";
   return Json::parse(read_text_file(file), file.string());
@@ -77,11 +87,7 @@ class StudyRun : public ::testing::Test {
  protected:
   static void SetUpTestSuite() {
     dir_ = new fs::path(scratch("straight"));
-    app::StudyOptions o;
-    o.file = write_study_file(*dir_).string();
-    o.out = (*dir_ / "out").string();
-    o.threads = 1;
-    o.quiet = true;
+    const app::StudyOptions o = one_thread_study(write_study_file(*dir_), *dir_ / "out");
     ASSERT_EQ(app::run_study(o), 0);
   }
   static void TearDownTestSuite() {
@@ -324,11 +330,7 @@ TEST_F(StudyRun, ACaseWhoseConfigurationChangedIsRefused) {
   std::string text = kStudy;
   text.replace(text.find("kinetic_friction = 0.6"), 22, "kinetic_friction = 0.7");
   const fs::path dir = scratch("changed");
-  app::StudyOptions o;
-  o.file = write_study_file(dir, text).string();
-  o.out = out().string();
-  o.threads = 1;
-  o.quiet = true;
+  const app::StudyOptions o = one_thread_study(write_study_file(dir, text), out());
   try {
     app::run_study(o);
     FAIL() << "expected an error";
@@ -369,11 +371,7 @@ TEST_F(StudyRun, AFinishedRunWithoutANewKeyOrWithAnotherDescriptionIsKept) {
     ASSERT_NE(at, std::string::npos);
     text.replace(at + 1, text.find('\n', at + 1) - at - 1, "description = \"worded otherwise\"");
   });
-  app::StudyOptions o;
-  o.file = write_study_file(dir).string();
-  o.out = copy.string();
-  o.threads = 1;
-  o.quiet = true;
+  const app::StudyOptions o = one_thread_study(write_study_file(dir), copy);
   ASSERT_EQ(app::run_study(o), 0);
   const std::string log = read_text_file(copy / "study.log");
   EXPECT_NE(log.find("[1/2] smooth: finished before, skipped"), std::string::npos) << log;
@@ -392,11 +390,7 @@ TEST_F(StudyRun, AFinishedRunWithAnotherValueOrAnUnknownKeyIsRefused) {
   for (const auto& [edit, expected] : edits) {
     const fs::path dir = scratch("older-refused");
     const fs::path copy = copy_with_edited_smooth_case(out(), dir, edit);
-    app::StudyOptions o;
-    o.file = write_study_file(dir).string();
-    o.out = copy.string();
-    o.threads = 1;
-    o.quiet = true;
+    const app::StudyOptions o = one_thread_study(write_study_file(dir), copy);
     try {
       app::run_study(o);
       ADD_FAILURE() << "expected an error for " << expected;
