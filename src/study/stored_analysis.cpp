@@ -10,6 +10,7 @@
 #include "core/errors.hpp"
 #include "core/length_text.hpp"
 #include "io/text_file.hpp"
+#include "plot/figure_format.hpp"
 
 namespace fs = std::filesystem;
 
@@ -55,6 +56,16 @@ std::string differing_input(const Json& m, double end_of_lowering) {
   return "";
 }
 
+// A figure `trapdem analyze` drew, named by its PNG path: the PNG, else the SVG (what a page shows;
+// a PDF is not shown as an image), else empty.
+fs::path kept_figure(const fs::path& png) {
+  for (const plot::FigureFormat format : {plot::FigureFormat::png, plot::FigureFormat::svg}) {
+    const fs::path file = plot::with_format(png, format);
+    if (fs::is_regular_file(file)) return file;
+  }
+  return {};
+}
+
 }  // namespace
 
 StoredAnalysis stored_final_analysis(const RunFolder& run) {
@@ -81,8 +92,15 @@ StoredAnalysis stored_final_analysis(const RunFolder& run) {
                          file.string(), e.what());
     return s;
   }
-  s.note = fmt::format("no figures: {} is gone; the numbers are from {}", run.snapshots_h5().filename().string(),
-                       file.string());
+  s.strain_figure = kept_figure(run.analysis().shear_strain_png());
+  s.displacement_figure = kept_figure(run.analysis().vertical_displacement_png());
+  if (s.strain_figure.empty() && s.displacement_figure.empty()) {
+    s.note = fmt::format("no figures: {} is gone; the numbers are from {}", run.snapshots_h5().filename().string(),
+                         file.string());
+  } else {
+    s.note = fmt::format("{} is gone; the numbers are from {}, the figures are the run's own from {}",
+                         run.snapshots_h5().filename().string(), file.string(), file.parent_path().string());
+  }
   return s;
 }
 

@@ -5,7 +5,11 @@
 // study report takes a run's numbers from that file when snapshots.h5 is missing, but only when
 // the file is the analysis the report would have made: the last snapshot at the end of lowering,
 // from the start of lowering, with every analysis setting at its default (a `trapdem analyze
-// --at 40mm` or `--grid 2mm` left there would be other numbers under the same names).
+// --at 40mm` or `--grid 2mm` left there would be other numbers under the same names). The figures
+// `trapdem analyze` drew with that file (analysis/shear_strain.png, vertical_displacement.png, kept
+// by `scripts/publish-study.sh --figures`) are then the only pictures of the run: the report shows
+// them, each on its own colour scale, where it cannot draw its own.
+#include <filesystem>
 #include <optional>
 #include <string>
 
@@ -16,7 +20,11 @@ namespace trapdem {
 
 struct StoredAnalysis {
   std::optional<Json> metrics;  // the run's analysis/metrics.json, if usable
-  std::string note;             // why it is not usable, or where the numbers came from
+  std::string note;             // why it is not usable, or where the numbers and figures came from
+  // With usable metrics: the run's own figures beside them, as a page shows them (PNG, else SVG);
+  // empty where there is none.
+  std::filesystem::path strain_figure;        // analysis/shear_strain.png: total gamma_max at the end
+  std::filesystem::path displacement_figure;  // analysis/vertical_displacement.png: contours at the end
 };
 
 // The stored analysis of a finished run (call when the run's snapshots are missing). Throws

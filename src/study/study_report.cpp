@@ -61,6 +61,27 @@ std::string image_html(const ReportFigure& f, const std::string& alt) {
 
 std::string contour_stem(const StudyCaseResult& c) { return "contours_" + c.summary.name; }
 
+// A run's own figure (StudyCaseResult::stored_*_figure) beside the page: its name there, e.g.
+// "run_shear_strain_rf1.png" ("run_": the run's analysis drew it, not the report).
+std::string stored_figure_name(const StudyCaseResult& c, const fs::path& figure) {
+  return "run_" + figure.stem().string() + "_" + c.summary.name + figure.extension().string();
+}
+
+void copy_stored_figure(const fs::path& dir, const StudyCaseResult& c, const fs::path& figure) {
+  if (figure.empty()) return;
+  write_atomically(dir / stored_figure_name(c, figure), [&](const fs::path& temporary) {
+    fs::copy_file(figure, temporary, fs::copy_options::overwrite_existing);
+  });
+}
+
+// The page's figure of a run's own image, its caption saying whose it is.
+std::string stored_figure_html(const StudyCaseResult& c, const fs::path& figure, const std::string& alt,
+                               const std::string& caption) {
+  const std::string name = stored_figure_name(c, figure);
+  return fmt::format("<figure><a href=\"{0}\"><img src=\"{0}\" alt=\"{1}\"></a><figcaption>{2}</figcaption></figure>\n",
+                     markup_escape(name), markup_escape(alt), caption);
+}
+
 void write_ground_reaction_chart(const fs::path& path, const StudyReportInput& in) {
   plot::LineChart chart;
   chart.title = "Ground reaction curves";
@@ -236,6 +257,10 @@ fs::path write_study_report(const fs::path& dir, const StudyReportInput& in) {
     if (c.contour_analysis)
       write_figure(dir, report_figure(contour_stem(c), in.format),
                    [&](const fs::path& p) { plot::write_displacement_contours(p, *c.contour_analysis); });
+  for (const StudyCaseResult& c : in.cases) {
+    copy_stored_figure(dir, c, c.stored_strain_figure);
+    copy_stored_figure(dir, c, c.stored_displacement_figure);
+  }
   const ReportFigure ground_reaction = report_figure("ground_reaction", in.format);
   write_figure(dir, ground_reaction, [&](const fs::path& p) { write_ground_reaction_chart(p, in); });
   for (const StudyCaseResult& c : in.cases)
@@ -316,10 +341,20 @@ fs::path write_study_report(const fs::path& dir, const StudyReportInput& in) {
                      "{:g} (the paper's Figure 7).</figcaption></figure>\n",
                      image_html(panel, "Panel of maximum shear strain maps, one per case"), vmax);
   } else {
-    h += "<p class=\"note\">No case has a figure.</p>\n";
+    h += "<p class=\"note\">No case has a figure the report could draw.</p>\n";
   }
-  for (const StudyCaseResult& c : in.cases)  // the cases left out of the panel, and why
-    if (!c.final_analysis)
+  bool stored_maps = false;
+  for (const StudyCaseResult& c : in.cases) stored_maps = stored_maps || (!c.final_analysis && !c.stored_strain_figure.empty());
+  if (stored_maps) h += "<div class=\"grid\">\n";
+  for (const StudyCaseResult& c : in.cases)  // the cases left out of the panel: their own figure, or why not
+    if (!c.final_analysis && !c.stored_strain_figure.empty())
+      h += stored_figure_html(c, c.stored_strain_figure, "Maximum shear strain map of " + c.summary.label,
+                              fmt::format("{}: the map its run's own analysis drew, on that figure's colour scale "
+                                          "(not the panel's). {}",
+                                          markup_escape(c.summary.label), markup_escape(c.missing_note)));
+  if (stored_maps) h += "</div>\n";
+  for (const StudyCaseResult& c : in.cases)
+    if (!c.final_analysis && c.stored_strain_figure.empty())
       h += fmt::format("<p class=\"note\">{}: {}</p>\n", markup_escape(c.summary.label), markup_escape(c.missing_note));
 
   h += fmt::format("<h2>Vertical displacement at δ = {}</h2>\n<div class=\"grid\">\n", markup_escape(contours_at));
@@ -329,6 +364,12 @@ fs::path write_study_report(const fs::path& dir, const StudyReportInput& in) {
                        image_html(report_figure(contour_stem(c), in.format),
                                   "Vertical displacement contours of " + c.summary.label),
                        markup_escape(c.summary.label));
+    } else if (!c.stored_displacement_figure.empty()) {
+      h += stored_figure_html(c, c.stored_displacement_figure, "Vertical displacement contours of " + c.summary.label,
+                              fmt::format("{}: the contours its run's own analysis drew, at the end of lowering "
+                                          "(not at δ = {}). {}",
+                                          markup_escape(c.summary.label), markup_escape(contours_at),
+                                          markup_escape(c.missing_note)));
     } else {
       h += fmt::format("<p class=\"note\">{}: {}</p>\n", markup_escape(c.summary.label), markup_escape(c.missing_note));
     }

@@ -2,7 +2,8 @@
 // The study report: DIR/report/index.html with its figures beside it (no network, no script), and
 // the same numbers for machines (summary.json, metrics.csv). Sections: findings (study_findings), the
 // Figure-7-style panel of maximum shear strain at the final displacement on one colour scale, vertical
-// displacement contours at report.contours_at, the ground reaction curves on one plot, the metrics
+// displacement contours at report.contours_at (a run without snapshots: the figures its own analysis
+// drew, said as such), the ground reaction curves on one plot, the metrics
 // table (each metric as mean and spread over the case's replicates), the sinkhole estimates, the parameters that differ, and each run's cost.
 #include <filesystem>
 #include <string>
@@ -25,6 +26,9 @@ struct StudyRunResult {
   const AnalysisResult* final_analysis = nullptr;    // at the final snapshot (null: not analysed)
   const AnalysisResult* contour_analysis = nullptr;  // at report.contours_at (null: no snapshot there)
   std::string missing_note;                          // why an analysis is missing
+  // Without snapshots: the figures `trapdem analyze` drew for the run, kept in its analysis/
+  // (stored_analysis.hpp); empty where there is none or where the report draws its own.
+  std::filesystem::path stored_strain_figure, stored_displacement_figure;
 };
 
 struct StudyCaseResult {
@@ -36,6 +40,9 @@ struct StudyCaseResult {
   const AnalysisResult* final_analysis = nullptr;    // of figure_run (null: none analysed)
   const AnalysisResult* contour_analysis = nullptr;  // of figure_run at report.contours_at
   std::string missing_note;                          // why an analysis is missing, for the page
+  // Where no run of the case has snapshots: the first analysed run's own figures (StudyRunResult),
+  // shown in place of the panel's map and of the contours, each on its own colour scale.
+  std::filesystem::path stored_strain_figure, stored_displacement_figure;
   std::vector<std::pair<std::string, std::string>> parameters;  // figure_run's resolved configuration
   double element_confining = kMissing;               // Pa, of the element test's angles (report.element_test)
 };

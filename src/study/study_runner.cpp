@@ -276,6 +276,8 @@ StudyRunResult summarise_run(const StudyDefinition& study, const StudyCase& c, c
     const StoredAnalysis stored = stored_final_analysis(folder);
     r.missing_note = stored.note;
     if (!stored.metrics) return r;
+    r.stored_strain_figure = stored.strain_figure;
+    r.stored_displacement_figure = stored.displacement_figure;
     read_mechanism_metrics(*stored.metrics, r.summary);
     read_run_numbers(c, run, study.report, quiet, r.summary);
     r.analysed = true;
@@ -339,7 +341,12 @@ fs::path write_study_outputs(const StudyDefinition& study, const StudyScale& sca
         r.parameters = resolved_parameters(last.run_dir);
         r.missing_note = last.contour_analysis ? "" : last.missing_note;
       }
+      if (!r.final_analysis && r.stored_strain_figure.empty() && r.stored_displacement_figure.empty()) {
+        r.stored_strain_figure = last.stored_strain_figure;
+        r.stored_displacement_figure = last.stored_displacement_figure;
+      }
     }
+    if (r.final_analysis) r.stored_strain_figure = r.stored_displacement_figure = fs::path();
     if (analysed.empty()) {
       r.summary.name = c.name;
       r.summary.label = c.label;

@@ -187,9 +187,11 @@ void ASecondCallSkipsEveryFinishedReplicateAndElementTest() {
 }
 
 // Snapshots are most of a run's size and what gets deleted or left on the cluster; the light results
-// keep analysis/metrics.json. A report made without them takes each run's numbers from there (the
-// same numbers), draws no figure of it and says why; a metrics.json of another analysis than the
-// report's (here one at 2 mm of travel) is not taken for it: the run is left out, the key named.
+// keep analysis/metrics.json (and, published with --figures, the figures analyze drew). A report
+// made without them takes each run's numbers from there (the same numbers), shows the run's own
+// figures where they are kept and says whose they are, or draws none and says why; a metrics.json
+// of another analysis than the report's (here one at 2 mm of travel) is not taken for it: the run
+// is left out, the key named.
 void ARunWhoseSnapshotsAreGoneIsReportedFromItsStoredAnalysis() {
   const std::string before = read_text_file(out() / "report" / "case_summary.csv");
   for (int s = 0; s < 2; ++s) ASSERT_TRUE(fs::remove(run_dir(0, s) / "snapshots.h5"));
@@ -200,11 +202,29 @@ void ARunWhoseSnapshotsAreGoneIsReportedFromItsStoredAnalysis() {
   const Json s = summary();
   for (int r = 0; r < 2; ++r) EXPECT_TRUE(s["cases"][0]["runs"][r]["analysed"].as_bool());
   std::string page = read_text_file(out() / "report" / "index.html");
-  const std::string note = "Smooth: no figures: snapshots.h5 is gone; the numbers are from ";
-  EXPECT_NE(page.find(note), std::string::npos) << page;
+  // The first seed's own figures, copied beside the page byte for byte, in place of the report's.
+  for (const char* figure : {"shear_strain", "vertical_displacement"}) {
+    const fs::path copy = out() / "report" / fmt::format("run_{}_smooth.png", figure);
+    ASSERT_TRUE(fs::exists(copy)) << copy;
+    EXPECT_EQ(read_text_file(copy), read_text_file(run_dir(0, 0) / "analysis" / fmt::format("{}.png", figure)));
+    EXPECT_NE(page.find(fmt::format("<img src=\"run_{}_smooth.png\"", figure)), std::string::npos) << page;
+  }
+  EXPECT_NE(page.find("Smooth: the map its run's own analysis drew, on that figure's colour scale"),
+            std::string::npos) << page;
+  EXPECT_NE(page.find("the figures are the run&#39;s own from " + (run_dir(0, 0) / "analysis").string()),
+            std::string::npos) << page;
   EXPECT_EQ(page.find("contours_smooth.png"), std::string::npos);
   EXPECT_NE(page.find("contours_rough.png"), std::string::npos);
   EXPECT_NE(page.find("strain_panel.png"), std::string::npos);  // Rough's panel
+
+  // Without the figures too: no figure of Smooth, and the page says why.
+  for (int r = 0; r < 2; ++r)
+    for (const char* figure : {"shear_strain.png", "vertical_displacement.png"})
+      ASSERT_TRUE(fs::remove(run_dir(0, r) / "analysis" / figure));
+  ASSERT_EQ(app::run_study(report_only), 0);
+  page = read_text_file(out() / "report" / "index.html");
+  EXPECT_NE(page.find("Smooth: no figures: snapshots.h5 is gone; the numbers are from "), std::string::npos) << page;
+  EXPECT_EQ(page.find("run_shear_strain_smooth.png"), std::string::npos);
 
   const fs::path metrics = run_dir(1, 0) / "analysis" / "metrics.json";
   std::string text = read_text_file(metrics);

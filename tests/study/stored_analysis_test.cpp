@@ -64,6 +64,32 @@ TEST(StoredAnalysis, TheReportsOwnAnalysisIsTakenAndSaysWhereTheNumbersCameFrom)
   fs::remove_all(dir);
 }
 
+// The figures `trapdem analyze` drew with the metrics are the run's only pictures once its snapshots
+// are gone: found as a page shows them (PNG, else SVG; a PDF is no image for a page), and named in
+// the note.
+TEST(StoredAnalysis, TheRunsOwnFiguresAreFoundBesideItsMetrics) {
+  const fs::path dir = run_folder(Inputs{});
+  const fs::path analysis = dir / "analysis";
+  std::ofstream(analysis / "shear_strain.svg") << "<svg/>";
+  std::ofstream(analysis / "shear_strain.png") << "png";
+  std::ofstream(analysis / "vertical_displacement.svg") << "<svg/>";
+  StoredAnalysis s = stored_final_analysis(RunFolder(dir));
+  ASSERT_TRUE(s.metrics.has_value()) << s.note;
+  EXPECT_EQ(s.strain_figure, analysis / "shear_strain.png");
+  EXPECT_EQ(s.displacement_figure, analysis / "vertical_displacement.svg");
+  EXPECT_EQ(s.note, "snapshots.h5 is gone; the numbers are from " + (analysis / "metrics.json").string() +
+                        ", the figures are the run's own from " + analysis.string());
+  fs::remove(analysis / "shear_strain.png");
+  fs::remove(analysis / "shear_strain.svg");
+  fs::remove(analysis / "vertical_displacement.svg");
+  std::ofstream(analysis / "shear_strain.pdf") << "%PDF";
+  s = stored_final_analysis(RunFolder(dir));
+  EXPECT_TRUE(s.strain_figure.empty());
+  EXPECT_TRUE(s.displacement_figure.empty());
+  EXPECT_EQ(s.note.rfind("no figures: ", 0), 0u) << s.note;
+  fs::remove_all(dir);
+}
+
 TEST(StoredAnalysis, AnyOtherAnalysisIsRefusedNamingTheKey) {
   struct Change {
     std::string Inputs::*input;
