@@ -140,6 +140,13 @@ namespace {
 
 std::string angle_text(double x) { return fmt::format("{:.1f}°", x); }
 
+// Without replicates a step beyond the resolution may still be inside the spread between packings
+// (at the paper's scale 5-10° in a band angle, ~0.05 in a normalised load: docs/validation.md).
+constexpr const char* kSingleRunCaveat =
+    "Each case is one run, one packing: the changes below are judged against each quantity's resolution alone, "
+    "not against the spread between packings, which one run cannot measure; they describe one realisation of each "
+    "case, and a trend among them holds only where replicates (`replicates = N`) show it beyond that spread.";
+
 // One side's band angle with its uncertainty: "4.3 ± 0.6°" (a single run: the fit's standard
 // error) or "4.3 ± 1.2° (fit 0.6°)" (replicates: the seeds' standard deviation, and the mean fit error).
 std::string band_side(const CaseEnsemble& e, double CaseSummary::*angle, double CaseSummary::*error) {
@@ -183,6 +190,8 @@ std::vector<std::string> study_findings(const std::vector<CaseEnsemble>& ensembl
     out.push_back("Values are means ± the sample standard deviation over each case's packing seeds; a trend is "
                   "claimed only where two cases' means differ by more than the sum of their standard deviations "
                   "(and the quantity's resolution).");
+  else if (ensembles.size() > 1)  // one packing a case: say what the sentences below cannot tell
+    out.push_back(kSingleRunCaveat);
   // Each band angle with its uncertainty.
   std::string angles;
   for (const CaseEnsemble& e : ensembles) {

@@ -2,6 +2,7 @@
 // whether it holds at every step, and no change where the differences are within the resolution.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 
 #include <fmt/format.h>
@@ -67,6 +68,26 @@ TEST(Findings, SinkholeSentenceCountsTheCasesWhereTheSuppositionIsLarger) {
             "With an angle of draw of 30° the scenario supposition gives a larger sinkhole than the DEM's surface zone "
             "of influence in 2 of 3 cases (supposition over DEM 0.70 to 1.40); the DEM surface zones imply angles of "
             "draw of 20.0° to 35.0°.");
+}
+
+// One run a case: the findings say before the trends that the packings' spread is not in them; with
+// replicates the trend rule's sentence stands there instead, and a single case needs neither.
+TEST(Findings, SingleRunsSayTheSpreadBetweenPackingsIsNotInTheTrends) {
+  const std::string caveat = "Each case is one run, one packing: the changes below are judged against each "
+                             "quantity's resolution alone, not against the spread between packings";
+  auto has = [](const std::vector<std::string>& f, const std::string& start) {
+    return std::any_of(f.begin(), f.end(), [&](const std::string& s) { return s.rfind(start, 0) == 0; });
+  };
+  std::vector<CaseSummary> cases(2);
+  for (int k = 0; k < 2; ++k) cases[k].label = kLabels[k];
+  EXPECT_TRUE(has(study_findings(cases, 30.0), caveat));
+  EXPECT_FALSE(has(study_findings(std::vector<CaseSummary>(cases.begin(), cases.begin() + 1), 30.0), caveat));
+  CaseSummary seed = cases[0];
+  seed.replicate = true;
+  const std::vector<CaseEnsemble> replicated = {make_ensemble({seed, seed}), make_ensemble({cases[1]})};
+  const std::vector<std::string> f = study_findings(replicated, 30.0);
+  EXPECT_FALSE(has(f, caveat));
+  EXPECT_TRUE(has(f, "Values are means ± the sample standard deviation over each case's packing seeds"));
 }
 
 TEST(ParameterDifferences, OnlyKeysThatDifferInFirstSeenOrder) {
