@@ -344,7 +344,8 @@ fs::path write_study_report(const fs::path& dir, const StudyReportInput& in) {
     h += "<p class=\"note\">No case has a figure the report could draw.</p>\n";
   }
   bool stored_maps = false;
-  for (const StudyCaseResult& c : in.cases) stored_maps = stored_maps || (!c.final_analysis && !c.stored_strain_figure.empty());
+  for (const StudyCaseResult& c : in.cases)
+    stored_maps = stored_maps || (!c.final_analysis && !c.stored_strain_figure.empty());
   if (stored_maps) h += "<div class=\"grid\">\n";
   for (const StudyCaseResult& c : in.cases)  // the cases left out of the panel: their own figure, or why not
     if (!c.final_analysis && !c.stored_strain_figure.empty())
