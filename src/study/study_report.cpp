@@ -74,12 +74,11 @@ void copy_stored_figure(const fs::path& dir, const StudyCaseResult& c, const fs:
   });
 }
 
-// The page's figure of a run's own image, its caption saying whose it is.
+// The page's figure of a run's own image (shown and linked as it is), its caption saying whose it is.
 std::string stored_figure_html(const StudyCaseResult& c, const fs::path& figure, const std::string& alt,
                                const std::string& caption) {
   const std::string name = stored_figure_name(c, figure);
-  return fmt::format("<figure><a href=\"{0}\"><img src=\"{0}\" alt=\"{1}\"></a><figcaption>{2}</figcaption></figure>\n",
-                     markup_escape(name), markup_escape(alt), caption);
+  return fmt::format("<figure>{}<figcaption>{}</figcaption></figure>\n", image_html({name, name}, alt), caption);
 }
 
 void write_ground_reaction_chart(const fs::path& path, const StudyReportInput& in) {
