@@ -45,6 +45,7 @@ double Hopper::planned_duration(std::int64_t count) const {
 
 bool Hopper::finished(const Simulation&) const {
   const PluviationConfig& p = config_->pluviation;
+  if (box_full_) return true;
   if (p.count > 0 && inserted_ >= p.count) return true;
   return p.fill_height > 0.0 && surface_height() >= p.fill_height;
 }
@@ -63,7 +64,9 @@ std::size_t Hopper::pour(Simulation& sim, Decomposition* ranks) {
   for (std::size_t i = 0; i < owned; ++i)
     if (p.velocity[i].z > -0.5 * entry_speed_ || entry_speed_ == 0.0) top = std::max(top, p.position[i].z + p.radius[i]);
   if (ranks) top = ranks->max(top);
-  const double z = std::min(top + 2.0 * c.material.sizes.max_diameter(), c.box.height + 3.0 * c.material.sizes.max_diameter());
+  const double ceiling = band_ceiling();
+  const bool at_ceiling = top + 2.0 * c.material.sizes.max_diameter() >= ceiling;
+  const double z = std::min(top + 2.0 * c.material.sizes.max_diameter(), ceiling);
 
   // Sites on a grid across the box; a fresh generator per insertion keeps the pour reproducible
   // from a checkpoint without storing generator state.
@@ -102,7 +105,7 @@ std::size_t Hopper::pour(Simulation& sim, Decomposition* ranks) {
   std::vector<double> diameter, site_blocked;
   std::vector<Vec3> site_x;
   std::size_t count = 0;
-  bool stop = false;
+  bool stop = false;  // the count, the fill height or the flow's budget says: no more now
   for (std::size_t first = 0; first < sites.size() && !stop; first += kChunk) {
     const std::size_t last = std::min(sites.size(), first + kChunk);
     diameter.clear();
@@ -141,8 +144,20 @@ std::size_t Hopper::pour(Simulation& sim, Decomposition* ranks) {
     band_limited_ = true;
     mass_budget_ = 0.0;
   }
+  // The box is full: the band cannot rise above its ceiling, the deposit has reached it and nearly
+  // every site is taken, insertion after insertion, while particles are still due (a looser
+  // material needs more height for the same count: 300 000 beads of RF2 stand higher than the
+  // 360 mm box). Pouring on would push particles into the heap at the band, not rain them; the
+  // pour ends as a model is filled to its rim, with fewer particles than the count.
+  const bool starved = !stop && count * kStarvedSiteFraction < sites.size();
+  stalled_insertions_ = at_ceiling && starved ? stalled_insertions_ + 1 : 0;
+  if (stalled_insertions_ >= kStalledInsertionsWhenFull) box_full_ = true;
   ++event_;
   return count;
+}
+
+double Hopper::band_ceiling() const {
+  return config_->box.height + 3.0 * config_->material.sizes.max_diameter();
 }
 
 std::map<std::string, std::string> Hopper::state() const {
@@ -152,7 +167,9 @@ std::map<std::string, std::string> Hopper::state() const {
           {"hopper.inserted_mass", hex(inserted_mass_)},
           {"hopper.event", fmt::to_string(event_)},
           {"hopper.inserted", fmt::to_string(inserted_)},
-          {"hopper.band_limited", band_limited_ ? "1" : "0"}};
+          {"hopper.band_limited", band_limited_ ? "1" : "0"},
+          {"hopper.stalled_insertions", fmt::to_string(stalled_insertions_)},
+          {"hopper.box_full", box_full_ ? "1" : "0"}};
 }
 
 void Hopper::restore(const std::map<std::string, std::string>& s) {
@@ -168,6 +185,10 @@ void Hopper::restore(const std::map<std::string, std::string>& s) {
   event_ = std::stoll(get("hopper.event"));
   inserted_ = std::stoll(get("hopper.inserted"));
   band_limited_ = get("hopper.band_limited") == "1";
+  // Absent from a checkpoint written before the box-full rule: no stall counted yet, not full.
+  const auto stalled = s.find("hopper.stalled_insertions"), full = s.find("hopper.box_full");
+  stalled_insertions_ = stalled == s.end() ? 0 : std::stoll(stalled->second);
+  box_full_ = full != s.end() && full->second == "1";
 }
 
 }  // namespace trapdem

@@ -23,7 +23,12 @@ class Hopper {
   // a rank of a decomposition (`ranks`, the simulation's; collective) every rank draws the same
   // sizes and sites and inserts those whose site it owns: the pour is the one-process pour.
   std::size_t pour(Simulation& sim, Decomposition* ranks = nullptr);
-  bool finished(const Simulation& sim) const;  // count reached, or the surface at the fill height
+  // The count reached, the surface at the fill height, or the box full (box_full()).
+  bool finished(const Simulation& sim) const;
+  // The deposit reached the band's ceiling (band_ceiling()) and the band found almost no free site
+  // for kStalledInsertionsWhenFull insertions in a row with particles still due.
+  bool box_full() const { return box_full_; }
+  double band_ceiling() const;  // m: the band rides at most this high, three diameters above the rim
 
   std::int64_t inserted() const { return inserted_; }
   double inserted_mass() const { return inserted_mass_; }      // kg
@@ -51,6 +56,13 @@ class Hopper {
   std::int64_t inserted_ = 0;
   double inserted_mass_ = 0.0;
   bool band_limited_ = false;
+  // A stalled insertion: at the ceiling, fewer than 1 / kStarvedSiteFraction of the sites free while
+  // particles are due. A pour at its flow rate takes about a fifth of the sites (1.5 kg/s of 2 mm
+  // beads); one that stalls ten times in a row (about 10 layers' fall time) is full.
+  static constexpr std::size_t kStarvedSiteFraction = 10;
+  static constexpr std::int64_t kStalledInsertionsWhenFull = 10;
+  std::int64_t stalled_insertions_ = 0;
+  bool box_full_ = false;
 };
 
 }  // namespace trapdem

@@ -173,12 +173,15 @@ bool TrapdoorExperiment::advance(ExperimentObserver& observer) {
       hopper_.pour(*sim_, decomposition_);
       sim_->step();
       if (hopper_.finished(*sim_)) {
+        std::string notes;
+        if (hopper_.flow_limited_by_band()) notes += "; the flow rate asked for exceeded what the hopper band passes";
+        if (hopper_.box_full())
+          notes += fmt::format("; the box is full: the deposit reached the hopper band's ceiling ({:.1f} mm) with {} "
+                               "of the {} particles asked for poured, and the pour ends there",
+                               hopper_.band_ceiling() * 1e3, hopper_.inserted(), config_.pluviation.count);
         observer.stage_finished(stage_, fmt::format("{} particles poured ({:.4g} kg), surface at about {:.1f} mm{}",
                                                     hopper_.inserted(), hopper_.inserted_mass(),
-                                                    hopper_.surface_height() * 1e3,
-                                                    hopper_.flow_limited_by_band()
-                                                        ? "; the flow rate asked for exceeded what the hopper band passes"
-                                                        : ""));
+                                                    hopper_.surface_height() * 1e3, notes));
         observer.snapshot_due(stage_name(stage_));
         start_stage(Stage::settling);
       }
