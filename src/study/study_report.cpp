@@ -2,6 +2,7 @@
 
 #include <cmath>
 #include <functional>
+#include <set>
 
 #include <fmt/format.h>
 
@@ -48,9 +49,32 @@ ReportFigure report_figure(const std::string& stem, plot::FigureFormat format) {
 
 // `draw` writes the figure to the path it is given: once in the report's format, once more as the
 // page's PNG where that differs.
-void write_figure(const fs::path& dir, const ReportFigure& f, const std::function<void(const fs::path&)>& draw) {
+void write_figure(const fs::path& dir, const ReportFigure& f, const std::function<void(const fs::path&)>& draw,
+                  std::set<std::string>& written) {
   draw(dir / f.file);
   if (f.shown != f.file) draw(dir / f.shown);
+  written.insert(f.file);
+  written.insert(f.shown);
+}
+
+// The figures a report of this folder drew before and this one did not (a case since analysed
+// from its snapshots, renamed or dropped, another figure format) are removed: a stale
+// run_shear_strain_rf1.png beside the page would be taken for this report's. Only the names the
+// report gives its figures are touched; anything else a user put in the folder stays.
+void remove_stale_figures(const fs::path& dir, const std::set<std::string>& written) {
+  static const char* const stems[] = {"strain_panel", "contours_", "run_", "ground_reaction"};
+  static const char* const extensions[] = {".png", ".svg", ".pdf"};
+  std::error_code ec;
+  for (const fs::directory_entry& e : fs::directory_iterator(dir, ec)) {
+    const std::string name = e.path().filename().string();
+    if (!e.is_regular_file() || written.count(name)) continue;
+    const std::string extension = e.path().extension().string();
+    bool figure_name = false;
+    for (const char* x : extensions) figure_name = figure_name || extension == x;
+    bool report_stem = false;
+    for (const char* stem : stems) report_stem = report_stem || name.rfind(stem, 0) == 0;
+    if (figure_name && report_stem) fs::remove(e.path(), ec);
+  }
 }
 
 // The image on the page, linked to the figure's file.
@@ -67,11 +91,13 @@ std::string stored_figure_name(const StudyCaseResult& c, const fs::path& figure)
   return "run_" + figure.stem().string() + "_" + c.summary.name + figure.extension().string();
 }
 
-void copy_stored_figure(const fs::path& dir, const StudyCaseResult& c, const fs::path& figure) {
+void copy_stored_figure(const fs::path& dir, const StudyCaseResult& c, const fs::path& figure,
+                        std::set<std::string>& written) {
   if (figure.empty()) return;
   write_atomically(dir / stored_figure_name(c, figure), [&](const fs::path& temporary) {
     fs::copy_file(figure, temporary, fs::copy_options::overwrite_existing);
   });
+  written.insert(stored_figure_name(c, figure));
 }
 
 // The page's figure of a run's own image (shown and linked as it is), its caption saying whose it is.
@@ -238,6 +264,7 @@ fs::path write_study_report(const fs::path& dir, const StudyReportInput& in) {
   if (ec) throw FileError(fmt::format("cannot create the report folder {}: {}", dir.string(), ec.message()));
 
   // Figures first: the page never points at an image that is not there.
+  std::set<std::string> written;  // the figures' file names
   std::vector<const AnalysisResult*> finals;
   std::vector<std::string> panel_titles;  // the case labels
   for (const StudyCaseResult& c : in.cases) {
@@ -251,21 +278,24 @@ fs::path write_study_report(const fs::path& dir, const StudyReportInput& in) {
   const bool has_panel = !finals.empty();
   const ReportFigure panel = report_figure("strain_panel", in.format);
   if (has_panel)
-    write_figure(dir, panel, [&](const fs::path& p) { plot::write_strain_panel(p, finals, panel_titles, vmax); });
+    write_figure(dir, panel, [&](const fs::path& p) { plot::write_strain_panel(p, finals, panel_titles, vmax); },
+                 written);
   for (const StudyCaseResult& c : in.cases)
     if (c.contour_analysis)
       write_figure(dir, report_figure(contour_stem(c), in.format),
-                   [&](const fs::path& p) { plot::write_displacement_contours(p, *c.contour_analysis); });
+                   [&](const fs::path& p) { plot::write_displacement_contours(p, *c.contour_analysis); }, written);
   for (const StudyCaseResult& c : in.cases) {
-    copy_stored_figure(dir, c, c.stored_strain_figure);
-    copy_stored_figure(dir, c, c.stored_displacement_figure);
+    copy_stored_figure(dir, c, c.stored_strain_figure, written);
+    copy_stored_figure(dir, c, c.stored_displacement_figure, written);
   }
   const ReportFigure ground_reaction = report_figure("ground_reaction", in.format);
-  write_figure(dir, ground_reaction, [&](const fs::path& p) { write_ground_reaction_chart(p, in); });
+  write_figure(dir, ground_reaction, [&](const fs::path& p) { write_ground_reaction_chart(p, in); }, written);
   for (const StudyCaseResult& c : in.cases)
     if (c.ensemble.replicates.size() > 1)
       write_figure(dir, report_figure(replicate_chart_stem(c), in.format),
-                   [&](const fs::path& p) { write_replicate_chart(p, c); });
+                   [&](const fs::path& p) { write_replicate_chart(p, c); }, written);
+
+  remove_stale_figures(dir, written);
 
   std::vector<CaseSummary> summaries;
   std::vector<CaseEnsemble> ensembles;

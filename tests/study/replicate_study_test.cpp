@@ -221,10 +221,17 @@ void ARunWhoseSnapshotsAreGoneIsReportedFromItsStoredAnalysis() {
   for (int r = 0; r < 2; ++r)
     for (const char* figure : {"shear_strain.png", "vertical_displacement.png"})
       ASSERT_TRUE(fs::remove(run_dir(0, r) / "analysis" / figure));
+  std::ofstream(out() / "report" / "my_sketch.png") << "a reader's own file";
   ASSERT_EQ(app::run_study(report_only), 0);
   page = read_text_file(out() / "report" / "index.html");
   EXPECT_NE(page.find("Smooth: no figures: snapshots.h5 is gone; the numbers are from "), std::string::npos) << page;
   EXPECT_EQ(page.find("run_shear_strain_smooth.png"), std::string::npos);
+  // The copies the previous report made are gone with it (they would pass for this report's);
+  // a file of another name stays.
+  for (const char* figure : {"shear_strain", "vertical_displacement"})
+    EXPECT_FALSE(fs::exists(out() / "report" / fmt::format("run_{}_smooth.png", figure))) << figure;
+  EXPECT_TRUE(fs::exists(out() / "report" / "my_sketch.png"));
+  EXPECT_TRUE(fs::exists(out() / "report" / "contours_rough.png"));
 
   const fs::path metrics = run_dir(1, 0) / "analysis" / "metrics.json";
   std::string text = read_text_file(metrics);
