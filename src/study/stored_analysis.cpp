@@ -9,6 +9,7 @@
 #include "analysis/analysis_run.hpp"
 #include "core/errors.hpp"
 #include "core/length_text.hpp"
+#include "core/path_text.hpp"
 #include "io/text_file.hpp"
 #include "plot/figure_format.hpp"
 
@@ -68,12 +69,13 @@ fs::path kept_figure(const fs::path& png) {
 
 }  // namespace
 
-StoredAnalysis stored_final_analysis(const RunFolder& run) {
+StoredAnalysis stored_final_analysis(const RunFolder& run, const fs::path& names_relative_to) {
   StoredAnalysis s;
   const fs::path file = run.metrics_json();
+  const std::string file_name = path_from(file, names_relative_to);
   if (!fs::exists(file)) {
     s.note = fmt::format("not analysed: {} is missing and so is {}", run.snapshots_h5().filename().string(),
-                         file.string());
+                         file_name);
     return s;
   }
   try {
@@ -83,23 +85,23 @@ StoredAnalysis stored_final_analysis(const RunFolder& run) {
     if (!differs.empty()) {
       s.note = fmt::format("not analysed: {} is missing, and {} is another analysis than the report's: {}; run "
                            "`trapdem analyze` while the snapshots are there",
-                           run.snapshots_h5().filename().string(), file.string(), differs);
+                           run.snapshots_h5().filename().string(), file_name, differs);
       return s;
     }
     s.metrics = std::move(m);
   } catch (const InputError& e) {
     s.note = fmt::format("not analysed: {} is missing and {} cannot be read: {}", run.snapshots_h5().filename().string(),
-                         file.string(), e.what());
+                         file_name, e.what());
     return s;
   }
   s.strain_figure = kept_figure(run.analysis().shear_strain_png());
   s.displacement_figure = kept_figure(run.analysis().vertical_displacement_png());
   if (s.strain_figure.empty() && s.displacement_figure.empty()) {
     s.note = fmt::format("no figures: {} is gone; the numbers are from {}", run.snapshots_h5().filename().string(),
-                         file.string());
+                         file_name);
   } else {
     s.note = fmt::format("{} is gone; the numbers are from {}, the figures are the run's own from {}",
-                         run.snapshots_h5().filename().string(), file.string(), file.parent_path().string());
+                         run.snapshots_h5().filename().string(), file_name, path_from(file.parent_path(), names_relative_to));
   }
   return s;
 }

@@ -29,6 +29,9 @@ struct StoredAnalysis {
 
 // The stored analysis of a finished run (call when the run's snapshots are missing). Throws
 // nothing for a missing or unsuitable file: `note` says what is wrong, naming the file and key.
-StoredAnalysis stored_final_analysis(const RunFolder& run);
+// The note names files relative to `names_relative_to` where one is given (a study's report names
+// them from the study folder, cases/rf1/analysis/metrics.json: a published report is read on
+// another machine, where the absolute path of the one that ran it means nothing).
+StoredAnalysis stored_final_analysis(const RunFolder& run, const std::filesystem::path& names_relative_to = {});
 
 }  // namespace trapdem

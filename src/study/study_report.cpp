@@ -7,6 +7,7 @@
 #include <fmt/format.h>
 
 #include "core/length_text.hpp"
+#include "core/path_text.hpp"
 #include "io/atomic_file.hpp"
 #include "core/errors.hpp"
 #include "core/text_escape.hpp"
@@ -491,6 +492,7 @@ fs::path write_study_report(const fs::path& dir, const StudyReportInput& in) {
 
   h += "<h2>Runs</h2>\n<div class=\"scroll\"><table>\n<tr><th class=\"l\">case</th><th>seed</th><th>particles</th>"
        "<th>run time</th><th>M particle-steps/s</th><th>segments</th><th class=\"l\">folder</th></tr>\n";
+  const fs::path study_dir = dir.parent_path();  // the report is the study folder's report/
   for (const StudyCaseResult& c : in.cases) {
     for (const StudyRunResult& r : c.runs) {
       const CaseCost& k = r.summary.cost;
@@ -498,7 +500,7 @@ fs::path write_study_report(const fs::path& dir, const StudyReportInput& in) {
                        "<td class=\"l\"><code>{}</code>{}</td></tr>\n", markup_escape(c.summary.label),
                        r.summary.replicate ? std::to_string(r.summary.seed) : "its own", cell(k.particles, "{:.0f}"),
                        duration(k.wall_seconds), cell(k.particle_steps_per_second / 1e6, "{:.2f}"),
-                       cell(k.segments, "{:.0f}"), markup_escape(r.run_dir.string()),
+                       cell(k.segments, "{:.0f}"), markup_escape(path_from(r.run_dir, study_dir)),
                        r.missing_note.empty() ? "" : " <span class=\"note\">" + markup_escape(r.missing_note) + "</span>");
     }
   }

@@ -257,8 +257,8 @@ void read_run_numbers(const StudyCase& c, const CaseRun& run, const StudyReportS
 // `finals` and `contours` for the report's figures. A run that cannot be analysed (too few
 // particles in view, say) gets a note and does not hide the others. A finished run whose
 // snapshots are gone is summarised from the analysis it kept (stored_analysis.hpp), without figures.
-StudyRunResult summarise_run(const StudyDefinition& study, const StudyCase& c, const CaseRun& run, bool quiet,
-                             plot::FigureFormat format, std::vector<std::unique_ptr<AnalysisResult>>& finals,
+StudyRunResult summarise_run(const StudyDefinition& study, const StudyCase& c, const CaseRun& run,
+                             const fs::path& out, bool quiet, plot::FigureFormat format, std::vector<std::unique_ptr<AnalysisResult>>& finals,
                              std::vector<std::unique_ptr<AnalysisResult>>& contours) {
   const RunFolder folder(run.dir);
   StudyRunResult r;
@@ -273,7 +273,7 @@ StudyRunResult summarise_run(const StudyDefinition& study, const StudyCase& c, c
   }
   r.summary.cost = read_case_cost(run.dir);
   if (!folder.has_snapshots()) {
-    const StoredAnalysis stored = stored_final_analysis(folder);
+    const StoredAnalysis stored = stored_final_analysis(folder, out);
     r.missing_note = stored.note;
     if (!stored.metrics) return r;
     r.stored_strain_figure = stored.strain_figure;
@@ -330,7 +330,7 @@ fs::path write_study_outputs(const StudyDefinition& study, const StudyScale& sca
     r.run_dir = case_directory(out, c);
     std::vector<CaseSummary> analysed;
     for (const CaseRun& run : case_runs(study, c, scale, out, preset_directory)) {
-      r.runs.push_back(summarise_run(study, c, run, quiet, format, finals, contours));
+      r.runs.push_back(summarise_run(study, c, run, out, quiet, format, finals, contours));
       const StudyRunResult& last = r.runs.back();
       if (!last.analysed) continue;
       analysed.push_back(last.summary);

@@ -64,6 +64,22 @@ TEST(StoredAnalysis, TheReportsOwnAnalysisIsTakenAndSaysWhereTheNumbersCameFrom)
   fs::remove_all(dir);
 }
 
+// A study's report names the files from the study folder: a published report is read elsewhere.
+// A folder that does not hold the run leaves the names as they are.
+TEST(StoredAnalysis, TheNoteNamesFilesFromTheFolderItIsGiven) {
+  const fs::path dir = run_folder(Inputs{});
+  std::ofstream(dir / "analysis" / "shear_strain.png") << "png";
+  StoredAnalysis s = stored_final_analysis(RunFolder(dir), dir.parent_path());
+  ASSERT_TRUE(s.metrics.has_value()) << s.note;
+  const fs::path from_parent = dir.filename() / "analysis";
+  EXPECT_EQ(s.note, "snapshots.h5 is gone; the numbers are from " + (from_parent / "metrics.json").string() +
+                        ", the figures are the run's own from " + from_parent.string());
+  s = stored_final_analysis(RunFolder(dir), dir / "elsewhere");
+  EXPECT_NE(s.note.find("the numbers are from " + (dir / "analysis" / "metrics.json").string()), std::string::npos)
+      << s.note;
+  fs::remove_all(dir);
+}
+
 // The figures `trapdem analyze` drew with the metrics are the run's only pictures once its snapshots
 // are gone: found as a page shows them (PNG, else SVG; a PDF is no image for a page), and named in
 // the note.
