@@ -114,7 +114,15 @@ void check_configuration(const FolderRunOptions& o, const std::map<std::string, 
   }
   const auto digest = metadata.find(RunRecorder::kConfigurationDigest);
   if (digest != metadata.end() && digest->second == config_digest(now)) return;  // the same run
-  const std::vector<ConfigChange> changes = config_changes(stored->second, now);
+  // The checkpoint's configuration as this trapdem reads it: a key added since it was written comes
+  // in at its default, which keeps the old behaviour, and is no change. A text this trapdem no
+  // longer reads is compared as it is: the retired key is then named as a change.
+  std::string started = stored->second;
+  try {
+    started = as_read_now(stored->second, "the checkpoint's configuration");
+  } catch (const InputError&) {
+  }
+  const std::vector<ConfigChange> changes = config_changes(started, now);
   for (const ConfigChange& c : changes) {
     if (allowed(o, c.key)) continue;
     throw InputError(fmt::format(

@@ -5,6 +5,7 @@
 
 #include <fmt/format.h>
 
+#include "experiment/experiment_config.hpp"
 #include "io/config.hpp"
 
 namespace trapdem {
@@ -44,6 +45,12 @@ std::map<std::string, std::string> value_leaves(std::string_view text, const cha
     }
   }
   return out;
+}
+
+std::string as_read_now(std::string_view resolved, const char* name) {
+  Config config = Config::parse(resolved, name);
+  (void)ExperimentConfig::from(config);  // fills in the keys added since, and checks the rest
+  return resolved_values(config);
 }
 
 std::vector<ConfigChange> config_changes(std::string_view started, std::string_view now) {

@@ -28,6 +28,13 @@ struct ConfigChange {
   std::string after;    // in the configuration now
 };
 
+// A run's resolved configuration as this trapdem reads it (its resolved_values()): `resolved` read
+// and checked as a run's configuration, so that a key added to trapdem since the text was written
+// comes in at its default (a new key's default keeps the old behaviour) and the two texts compare
+// key by key. Throws InputError, naming `name`, for a text this trapdem does not read (a key
+// retired since, a value out of range).
+std::string as_read_now(std::string_view resolved, const char* name);
+
 // The keys whose values differ between two resolved_values() texts, in key order; the
 // output-only [derived] table is left out (it follows from the keys).
 std::vector<ConfigChange> config_changes(std::string_view started, std::string_view now);

@@ -17,6 +17,7 @@
 #include "core/json.hpp"
 #include "experiment/folder_run.hpp"
 #include "experiment/run_record.hpp"
+#include "experiment/run_identity.hpp"
 #include "experiment/run_recorder.hpp"
 #include "io/checkpoint.hpp"
 #include "io/folder_lock.hpp"
@@ -127,6 +128,49 @@ TEST(ResumeIdentity, ACheckpointWithoutAStoredConfigurationResumesWithANote) {
                                            "configuration; resolved.toml is taken as it is"),
             std::string::npos);
   EXPECT_EQ(read_checkpoint(run / "checkpoint.h5").stats.steps, 400);
+}
+
+// A checkpoint written by an older trapdem, before a key existed: its stored configuration lacks
+// the key. Read again by this trapdem the key comes in at its default, which is the old behaviour:
+// the run resumes. Where the run now holds another value of it, or the stored text holds a key this
+// trapdem no longer reads, the resume is refused naming that key.
+TEST(ResumeIdentity, AKeyAddedSinceTheCheckpointResumesAtItsDefault) {
+  ScratchDir dir;
+  const fs::path run = dir / "run";
+  ASSERT_FALSE(run_in_folder(fresh(run, 300)));
+  const Checkpoint written = read_checkpoint(run / "checkpoint.h5");
+  auto with_stored_configuration = [&](const std::string& from, const std::string& to) {
+    Checkpoint c = written;
+    std::string& text = c.metadata.at(RunRecorder::kConfiguration);
+    const std::size_t at = text.find(from);
+    EXPECT_NE(at, std::string::npos) << text;
+    if (at != std::string::npos) text.replace(at, from.size(), to);
+    c.metadata.at(RunRecorder::kConfigurationDigest) = config_digest(text);  // as the older trapdem wrote it
+    write_checkpoint(run / "checkpoint.h5", c);
+  };
+
+  // numerics.max_overlap_fraction at its default (0.25) in this run, absent from the checkpoint.
+  with_stored_configuration("\nmax_overlap_fraction = 0.25\n", "\n");
+  EXPECT_FALSE(run_in_folder(resume(run, 400)));
+  EXPECT_EQ(read_checkpoint(run / "checkpoint.h5").stats.steps, 400);
+  EXPECT_EQ(read_all(run / "run.log").find("changed on resume"), std::string::npos);
+
+  // Absent from a checkpoint, while the run now holds another value: refused, named.
+  const std::string resolved = read_all(run / "resolved.toml"), at_default = "\nmax_overlap_fraction = 0.25\n";
+  std::string edited = resolved;
+  ASSERT_NE(edited.find(at_default), std::string::npos) << resolved;
+  edited.replace(edited.find(at_default), at_default.size(), "\nmax_overlap_fraction = 0.3\n");
+  std::ofstream(run / "resolved.toml") << edited;
+  with_stored_configuration("\nmax_overlap_fraction = 0.25\n", "\n");
+  std::string m = refusal(resume(run, 500));
+  EXPECT_NE(m.find("numerics.max_overlap_fraction was 0.25 at the checkpoint, is 0.3 now"), std::string::npos) << m;
+  std::ofstream(run / "resolved.toml") << resolved;
+
+  // A key this trapdem does not read (retired since) in the checkpoint: named as a change.
+  with_stored_configuration("\n[numerics]\n", "\n[numerics]\nretired_key = 1\n");
+  m = refusal(resume(run, 500));
+  EXPECT_NE(m.find("numerics.retired_key was 1 at the checkpoint, is (absent) now"), std::string::npos) << m;
+  EXPECT_EQ(read_checkpoint(run / "checkpoint.h5").stats.steps, 300);  // nothing ran
 }
 
 // The kill of issue 14: the stage-end checkpoint at the end of spin-up (step N), then the lowering's
