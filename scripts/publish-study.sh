@@ -12,7 +12,8 @@
 #   whose snapshots will not outlive their machine: the report draws no figure of a run without
 #   them (docs/study.md), so these are then the only pictures of it.
 # DEST_DIR's files are replaced one by one (a file that is no longer in the study stays: remove
-# DEST_DIR first for an exact copy).
+# DEST_DIR first for an exact copy), but for study.log, whose published lines are kept and the
+# study's new ones added after them.
 set -euo pipefail
 usage() { echo "usage: $0 STUDY_DIR DEST_DIR [--finished-only] [--figures]" >&2; exit 2; }
 [ $# -ge 2 ] || usage
@@ -59,7 +60,17 @@ if [ -d "$study/report" ]; then
   mkdir -p "$dest/report"
   find "$study/report" -maxdepth 1 -type f ! -name '*.h5' -exec cp {} "$dest/report/" \;
 fi
-for f in study.log study.json; do
-  [ -f "$study/$f" ] && cp "$study/$f" "$dest/$f"
-done
+[ -f "$study/study.json" ] && cp "$study/study.json" "$dest/study.json"
+# study.log: the lines published before stay, and this folder's are added after them, each line
+# once. A study carried from machine to machine (one case a session, each in a new folder) keeps
+# its whole history, whether or not the new folder began from the published log.
+if [ -f "$study/study.log" ]; then
+  if [ -f "$dest/study.log" ]; then
+    merged=$(mktemp "$dest/.study.log.XXXXXX")
+    awk '!seen[$0]++' "$dest/study.log" "$study/study.log" > "$merged"
+    mv "$merged" "$dest/study.log"
+  else
+    cp "$study/study.log" "$dest/study.log"
+  fi
+fi
 echo "publish-study: $copied runs and $( [ -d "$study/report" ] && echo "the report" || echo "no report") copied to $dest"
