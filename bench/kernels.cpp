@@ -66,10 +66,10 @@ ContactLaw standard_law(int rolling) {
 // The law's instance for standard_law(rolling): what law_choices() gives for it.
 constexpr LawChoices kStandardChoices[] = {
     LawChoices{},
-    LawChoices{NormalModel::linear, RollingModel::constant_torque, RollingLeverArm::effective_radius,
-               RollingStiffness::ai2011, false},
-    LawChoices{NormalModel::linear, RollingModel::elastic_plastic, RollingLeverArm::effective_radius,
-               RollingStiffness::tangential, false},
+    LawChoices{.rolling = RollingModel::constant_torque, .lever_arm = RollingLeverArm::effective_radius},
+    LawChoices{.rolling = RollingModel::elastic_plastic,
+               .lever_arm = RollingLeverArm::effective_radius,
+               .rolling_stiffness = RollingStiffness::tangential},
 };
 
 template <LawChoices kLaw>

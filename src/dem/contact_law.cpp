@@ -11,9 +11,23 @@
 
 namespace trapdem {
 
+bool ContactLaw::uses_reference_time_step() const {
+  return tangential_model == TangentialModel::blaze_viscous ||
+         (rolling_model == RollingModel::angular_damping && rolling_friction > 0.0);
+}
+
+double ContactLaw::damping_restitution() const {
+  // Blaze-DEM V_02_2015, src/Input/KSimulationData.cpp (every Set_SpringConstants* function):
+  // `if (COR >= 0.30 && COR <= 0.90) COR -= 0.038080;` before c_n is computed from it.
+  if (damping_model == DampingModel::restitution_blaze && restitution >= 0.3 && restitution <= 0.9)
+    return restitution - 0.03808;
+  return restitution;
+}
+
 double ContactLaw::damping_ratio() const {
-  if (restitution >= 1.0) return 0.0;
-  const double log_e = std::log(restitution);
+  const double e = damping_restitution();
+  if (e >= 1.0) return 0.0;
+  const double log_e = std::log(e);
   return -log_e / std::sqrt(log_e * log_e + std::numbers::pi * std::numbers::pi);
 }
 
@@ -35,6 +49,19 @@ void ContactLaw::validate(const std::string& where) const {
   if (!(kinetic_friction >= 0.0)) fail(where, "kinetic_friction", kinetic_friction, "a friction coefficient >= 0");
   if (!(rolling_friction >= 0.0)) fail(where, "rolling_friction", rolling_friction, "a rolling friction coefficient >= 0");
   if (!(rolling_damping >= 0.0)) fail(where, "rolling_damping", rolling_damping, "a damping ratio >= 0");
+  if (rolling_model == RollingModel::angular_damping && !(rolling_friction < 1.0))
+    fail(where, "rolling_friction", rolling_friction,
+         "a factor in [0, 1) with rolling_model = \"angular_damping\" (omega is multiplied by 1 - mu_r per reference step)");
+  if (uses_reference_time_step()) {
+    if (!(reference_time_step > 0.0) || !std::isfinite(reference_time_step))
+      fail(where, "reference_time_step", reference_time_step,
+           "a positive time step in s (Blaze-DEM's dt: tangential_model = \"blaze_viscous\" and rolling_model = "
+           "\"angular_damping\" take their rates from it)");
+    if (!(blaze_velocity_scale > 0.0) || !std::isfinite(blaze_velocity_scale))
+      fail(where, "blaze_velocity_scale", blaze_velocity_scale, "a positive speed in m/s");
+    if (!(blaze_rest_speed > 0.0) || !std::isfinite(blaze_rest_speed))
+      fail(where, "blaze_rest_speed", blaze_rest_speed, "a positive speed in m/s");
+  }
 }
 
 void ContactLaw::validate_material(const std::string& where) const {
@@ -53,6 +80,8 @@ E parse_choice(std::string_view name) {
   throw InputError(fmt::format("{} '{}': expected one of {}", ChoiceTable<E>::what, name, names));
 }
 template NormalModel parse_choice<NormalModel>(std::string_view);
+template TangentialModel parse_choice<TangentialModel>(std::string_view);
+template DampingModel parse_choice<DampingModel>(std::string_view);
 template RollingModel parse_choice<RollingModel>(std::string_view);
 template RollingLeverArm parse_choice<RollingLeverArm>(std::string_view);
 template RollingStiffness parse_choice<RollingStiffness>(std::string_view);
@@ -60,6 +89,7 @@ template RollingStiffness parse_choice<RollingStiffness>(std::string_view);
 LawChoices law_choices(const ContactLaw& law) {
   LawChoices c;
   c.normal = law.normal_model;
+  c.tangential = law.tangential_model;
   c.rolling = law.rolling_friction > 0.0 ? law.rolling_model : RollingModel::none;
   c.lever_arm = law.lever_arm;
   c.rolling_stiffness = law.rolling_stiffness;
@@ -75,11 +105,29 @@ LawParams law_params(const ContactLaw& law, const ContactLaw& particle_law) {
     return Model::damping_scale;
   });
   p.damping.factor = 2.0 * damping_scale * law.damping_ratio();
-  p.tangential.mu_s = law.static_friction;
-  p.tangential.mu_k = law.kinetic_friction;
+  TangentialModels::visit(law.tangential_model, [&](auto model) {
+    using Model = decltype(model);
+    static_cast<typename Model::Params&>(p.tangential) = Model::params(law);
+    return 0;
+  });
   p.mu_r = law.rolling_friction;
-  p.eta_r = law.rolling_damping;
+  RollingModels::visit(law.rolling_model, [&](auto model) {
+    using Model = decltype(model);
+    static_cast<typename Model::Params&>(p.rolling) = Model::params(law);
+    return 0;
+  });
   return p;
+}
+
+double spin_retention(const ContactLaw& law, double dt) {
+  if (!damps_spin(law_choices(law))) return 1.0;
+  return RollingModels::visit(law.rolling_model, [&](auto model) {
+    using Model = decltype(model);
+    if constexpr (Model::damps_spin)
+      return Model::spin_retention(law, dt);
+    else
+      return 1.0;
+  });
 }
 
 double contact_time_scale(const ContactLaw& law, const ContactLaw& particle_law, double mass, double radius) {

@@ -16,15 +16,28 @@ struct ContactLaw {
   double youngs_modulus = 0.0;            // E, Pa (hertz): of the particles' material, or of a wall's
   double poisson_ratio = 0.3;             // nu (hertz), in [0, 0.5)
   double restitution = 0.9;               // e in (0, 1]; sets both dashpots
+  DampingModel damping_model = DampingModel::restitution;
+  TangentialModel tangential_model = TangentialModel::coulomb;
   double static_friction = 0.5;           // mu_s: the stick limit |F_t| <= mu_s |F_n|
-  double kinetic_friction = 0.5;          // mu_k: |F_t| = mu_k |F_n| while sliding
-  double rolling_friction = 0.0;          // mu_r (dimensionless): M_max = mu_r R |F_n|
+  double kinetic_friction = 0.5;          // mu_k: |F_t| = mu_k |F_n| while sliding (blaze_viscous: its strength)
+  double rolling_friction = 0.0;          // mu_r (dimensionless): M_max = mu_r R |F_n|; angular_damping: 1 - mu_r per reference step
   RollingModel rolling_model = RollingModel::none;
   RollingLeverArm lever_arm = RollingLeverArm::average_radius;
   RollingStiffness rolling_stiffness = RollingStiffness::ai2011;
   double rolling_damping = 0.3;           // eta_r of the EPSD dashpot (Ai et al. 2011 use 0.3)
+  // Blaze-DEM's law (tangential_blaze_viscous.hpp, rolling_angular_damping.hpp): its time step
+  // sets the tangential force's scale and the angular damping's rate.
+  double reference_time_step = 0.0;       // s, dt_ref (0: unset; required by those models)
+  double blaze_velocity_scale = 5.0e-4;   // m/s, u0 (Blaze's literal 0.05 cm/s)
+  double blaze_rest_speed = 0.01;         // m/s, V when the centres' relative speed is 0 (Blaze's 1 cm/s)
 
-  // beta = -ln e / sqrt(ln^2 e + pi^2); the dashpot is c = f beta sqrt(m* S_n) (contact/damping.hpp).
+  // Whether a Blaze-DEM model is chosen (the reference keys are read and required then).
+  bool uses_reference_time_step() const;
+  // The restitution the dashpots are set from: e, or Blaze-DEM's e - 0.03808 for 0.3 <= e <= 0.9.
+  double damping_restitution() const;
+
+  // beta = -ln e / sqrt(ln^2 e + pi^2) of damping_restitution(); the dashpot is c = f beta sqrt(m* S_n)
+  // (contact/damping.hpp).
   double damping_ratio() const;
   // Throws InputError naming the parameter (prefixed by `where`) when a value is impossible.
   void validate(const std::string& where) const;
@@ -32,8 +45,13 @@ struct ContactLaw {
   void validate_material(const std::string& where) const;
 };
 
-// The law's choices as the compiler sees them (rolling none when mu_r = 0; canonical).
+// The law's choices as the compiler sees them (rolling none when mu_r = 0: every rolling model
+// scales with mu_r, angular_damping's factor 1 - mu_r included; canonical).
 LawChoices law_choices(const ContactLaw& law);
+
+// The factor on every particle's angular velocity per engine step of dt (s): 1 unless the law's
+// rolling model damps spin (rolling_angular_damping.hpp).
+double spin_retention(const ContactLaw& law, double dt);
 
 // The value named `name` of a choice (e.g. parse_choice<RollingModel>("elastic_plastic")).
 template <class E>

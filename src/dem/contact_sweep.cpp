@@ -166,9 +166,7 @@ void Simulation::contacts(bool kick) {
   s.wall_batches.resize(std::size_t(threads));
   const std::size_t n_walls = walls_.size();
   s.wall_loads.assign(std::size_t(threads) * n_walls * 2, Vec3{});  // force, torque per thread and wall
-  const SecondHalfKick second_half_kick{p_.velocity.data(), p_.angular_velocity.data(), p_.force.data(),
-                                        p_.torque.data(),   p_.inv_mass.data(),         p_.inv_inertia.data(),
-                                        gravity(),          0.5 * dt_,                  !settings_.freeze_rotation};
+  const SecondHalfKick second_half_kick = this->second_half_kick();
   const SweepInputs in{p_,
                        settings_.domain,
                        settings_.domain.any_periodic(),
@@ -204,6 +202,12 @@ void Simulation::contacts(bool kick) {
   contacts_.swap(contacts_next_);
   max_overlap_seen_ = max_overlap;
   sum_wall_loads(threads);
+}
+
+SecondHalfKick Simulation::second_half_kick() {
+  return {p_.velocity.data(),    p_.angular_velocity.data(), p_.force.data(), p_.torque.data(),
+          p_.inv_mass.data(),    p_.inv_inertia.data(),      gravity(),       0.5 * dt_,
+          !settings_.freeze_rotation, spin_retention(law_, dt_)};
 }
 
 // The shares for partners in later threads' blocks, in thread order.

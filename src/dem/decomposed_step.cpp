@@ -47,9 +47,7 @@ bool Simulation::owns_site(const Vec3& x) const { return !decomposition_ || deco
 double Simulation::global_sum(double local) const { return decomposition_ ? decomposition_->sum(local) : local; }
 
 int Simulation::kick_owned() {
-  const SecondHalfKick kick{p_.velocity.data(), p_.angular_velocity.data(), p_.force.data(),
-                            p_.torque.data(),   p_.inv_mass.data(),         p_.inv_inertia.data(),
-                            gravity(),          0.5 * dt_,                  !settings_.freeze_rotation};
+  const SecondHalfKick kick = second_half_kick();
   const std::size_t n = owned_count();
   int any_bad = 0;
 #pragma omp parallel for schedule(static) reduction(| : any_bad)

@@ -28,7 +28,9 @@ DriftReport first_half_kick_and_drift(Particles& p, std::size_t n, const Vec3* p
 void move_walls(std::vector<Wall>& walls, double time, double dt);
 
 // The second half kick for one particle whose force is complete: v += dt/2 (F/m + g),
-// w += dt/2 T/I. Returns 1 when the result is not finite.
+// w = spin_retention (w + dt/2 T/I). spin_retention is 1 (the product then exact) unless the
+// particle law's rolling model damps spin once per step (contact/rolling_angular_damping.hpp).
+// Returns 1 when the result is not finite.
 struct SecondHalfKick {
   Vec3* __restrict v;
   Vec3* __restrict w;
@@ -39,9 +41,10 @@ struct SecondHalfKick {
   Vec3 g;
   double half;
   bool rotate;
+  double spin_retention;
   int operator()(std::size_t p) const {
     v[p] += half * (f[p] * inv_m[p] + g);
-    if (rotate) w[p] += (half * inv_i[p]) * t[p];
+    if (rotate) w[p] = (w[p] + (half * inv_i[p]) * t[p]) * spin_retention;
     return is_finite(v[p]) && is_finite(w[p]) ? 0 : 1;
   }
 };

@@ -12,13 +12,11 @@
 #include <vector>
 
 #include "dem/contact/choices.hpp"
+#include "dem/contact/models.hpp"  // keeps_rolling_spring
 #include "dem/contact/contact_history.hpp"
 #include "dem/vec3.hpp"
 
 namespace trapdem {
-
-// Whether a law's contacts remember a rolling spring (only EPSD: rolling_epsd.hpp).
-constexpr bool keeps_rolling_spring(const LawChoices& law) { return law.rolling == RollingModel::elastic_plastic; }
 
 // What every law remembers of a contact.
 struct TangentialHistory {

@@ -141,6 +141,7 @@ class Simulation {
   void step_decomposed();        // decomposed_step.cpp
   void drop_ghosts();            // their histories kept for the next rebuild
   int kick_owned();              // the second half kick of the owned particles (decomposed_step.cpp)
+  SecondHalfKick second_half_kick();  // this step's, for kick_owned and the fused sweep
   double global_sum(double local) const;
   void rebuild_lists();
   // Particle pairs and walls, and with kick the second half kick (contact_sweep.cpp).

@@ -26,6 +26,8 @@ constexpr double kMaxStiffness = 1e14;         // N/m: 2000x the paper's k_n = 4
 constexpr double kMaxModulus = 1e13;           // Pa: diamond has E = 1.2e12 Pa
 constexpr double kMaxFriction = 10.0;          // mu_s, mu_k, mu_r: measured ones are below 2
 constexpr double kMaxRollingDamping = 10.0;    // eta_r: usual 0.3
+constexpr double kMaxReferenceTimeStep = 1e-2; // s: a DEM time step; Blaze-DEM's are ~1e-8 to 1e-6
+constexpr double kMaxBlazeSpeed = 10.0;        // m/s: Blaze-DEM's u0 is 5e-4, its rest speed 0.01
 constexpr std::int64_t kMaxParticles = 100'000'000;  // memory: about 0.5 kB per particle with its contacts
 constexpr double kMaxTime = 1e4;               // s of simulated time in one stage
 constexpr double kMaxGLevel = 1000.0;          // g: centrifuges reach a few hundred g
@@ -65,6 +67,10 @@ ContactLaw read_contact_law(Config table, const ContactLaw& base) {
                                                              : base.youngs_modulus;
   law.poisson_ratio = table.get_double("poisson_ratio", base.poisson_ratio, "", Range{0.0, 0.5, true, false});
   law.restitution = table.get_double("restitution", base.restitution, "", Range::unit_open_closed());
+  law.damping_model = parse_choice<DampingModel>(
+      table.get_choice("damping_model", to_string(base.damping_model), choice_names<DampingModel>()));
+  law.tangential_model = parse_choice<TangentialModel>(
+      table.get_choice("tangential_model", to_string(base.tangential_model), choice_names<TangentialModel>()));
   law.static_friction = table.get_double("static_friction", base.static_friction, "", Range::closed(0.0, kMaxFriction));
   const double mu_k_default = table.has("static_friction") ? law.static_friction : base.kinetic_friction;
   law.kinetic_friction = table.get_double("kinetic_friction", mu_k_default, "", Range::closed(0.0, kMaxFriction));
@@ -76,6 +82,25 @@ ContactLaw read_contact_law(Config table, const ContactLaw& base) {
   law.rolling_stiffness = parse_choice<RollingStiffness>(
       table.get_choice("rolling_stiffness", to_string(base.rolling_stiffness), choice_names<RollingStiffness>()));
   law.rolling_damping = table.get_double("rolling_damping", base.rolling_damping, "", Range::closed(0.0, kMaxRollingDamping));
+  // Blaze-DEM's reference keys: read where a model uses them, an error elsewhere (they would be ignored).
+  if (law.uses_reference_time_step()) {
+    law.reference_time_step = base.reference_time_step > 0.0
+                                  ? table.get_double("reference_time_step", base.reference_time_step, "s", Range::open_closed(0.0, kMaxReferenceTimeStep))
+                                  : table.require_double("reference_time_step", "s", Range::open_closed(0.0, kMaxReferenceTimeStep));
+    law.blaze_velocity_scale = table.get_double("blaze_velocity_scale", base.blaze_velocity_scale, "m/s", Range::open_closed(0.0, kMaxBlazeSpeed));
+    law.blaze_rest_speed = table.get_double("blaze_rest_speed", base.blaze_rest_speed, "m/s", Range::open_closed(0.0, kMaxBlazeSpeed));
+  } else {
+    for (const char* key : {"reference_time_step", "blaze_velocity_scale", "blaze_rest_speed"})
+      if (table.has(key))
+        table.fail(key, "no Blaze-DEM reference with this law (read only with tangential_model = \"blaze_viscous\" "
+                        "or rolling_model = \"angular_damping\" and rolling_friction > 0); remove the key");
+    law.reference_time_step = base.reference_time_step;
+    law.blaze_velocity_scale = base.blaze_velocity_scale;
+    law.blaze_rest_speed = base.blaze_rest_speed;
+  }
+  if (law.rolling_model == RollingModel::angular_damping && !(law.rolling_friction < 1.0))
+    table.fail("rolling_friction", "a factor in [0, 1) with rolling_model = \"angular_damping\" (omega is multiplied "
+                                   "by 1 - mu_r per reference step)");
   return law;
 }
 

@@ -39,8 +39,9 @@ constexpr int kNx = 8, kNy = 8, kNz = 6;
 
 // The laws, each with the choices its instance below is compiled for.
 ContactLaw particle_law() { return frictional_rolling_law(); }  // EPSD rolling, friction 0.4 / 0.3
-constexpr LawChoices kParticleChoices{NormalModel::linear, RollingModel::elastic_plastic,
-                                      RollingLeverArm::effective_radius, RollingStiffness::ai2011, true};
+constexpr LawChoices kParticleChoices{.rolling = RollingModel::elastic_plastic,
+                                      .lever_arm = RollingLeverArm::effective_radius,
+                                      .rolling_dashpot = true};
 
 ContactLaw floor_law() {  // EPSD as the particles, stiffer, more friction
   ContactLaw law = particle_law();
@@ -60,8 +61,7 @@ ContactLaw plate_law() {  // no rolling resistance
   law.restitution = 0.8;
   return law;
 }
-constexpr LawChoices kSideChoices{NormalModel::linear, RollingModel::constant_torque, RollingLeverArm::average_radius,
-                                  RollingStiffness::ai2011, false};
+constexpr LawChoices kSideChoices{.rolling = RollingModel::constant_torque};
 constexpr LawChoices kPlateChoices{};
 
 Simulation make_packing() {

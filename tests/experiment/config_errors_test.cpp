@@ -223,7 +223,33 @@ const std::vector<BadConfig>& cases() {
        "rolling_model = \"rolling_resistance\"\n"
        "[pluviation]\n"
        "count = 100\n",
-       3, "contact.rolling_model", "expected one of \"none\", \"constant_torque\", \"elastic_plastic\""},
+       3, "contact.rolling_model", "expected one of \"none\", \"constant_torque\", \"elastic_plastic\", \"angular_damping\""},
+      {"UnknownTangentialModel",
+       "[contact]\n"
+       "tangential_model = \"viscous\"\n"
+       "[pluviation]\n"
+       "count = 100\n",
+       2, "contact.tangential_model", "expected one of \"coulomb\", \"blaze_viscous\""},
+      {"BlazeViscousWithoutReferenceStep",
+       "[contact]\n"
+       "tangential_model = \"blaze_viscous\"\n"
+       "[pluviation]\n"
+       "count = 100\n",
+       0, "contact.reference_time_step", "required"},
+      {"ReferenceStepWithCoulomb",
+       "[contact]\n"
+       "reference_time_step = 1e-7\n"
+       "[pluviation]\n"
+       "count = 100\n",
+       2, "contact.reference_time_step", "no Blaze-DEM reference with this law"},
+      {"AngularDampingOfOneOrMore",
+       "[contact]\n"
+       "rolling_model = \"angular_damping\"\n"
+       "rolling_friction = 1.0\n"
+       "reference_time_step = 1e-7\n"
+       "[pluviation]\n"
+       "count = 100\n",
+       3, "contact.rolling_friction", "a factor in [0, 1)"},
       {"UnknownLeverArm",
        "[contact]\n"
        "lever_arm = \"radius\"\n"

@@ -3,7 +3,7 @@
 // radius, lever arms, rolling inertia), written once for particle pairs and particle-wall
 // contacts. A wall is a body of infinite mass and inertia that does not rotate and does not
 // deform: its terms drop out of each reduction, and the contact point lies on its surface.
-#include "dem/contact/choices.hpp"
+#include "dem/contact/models.hpp"
 
 namespace trapdem {
 
@@ -23,11 +23,13 @@ struct ContactBodies {
   double lever;              // m, rolling lever arm R
   double rolling_inertia;    // kg m^2, Ai et al. (2011) I_r = [1/(I_i + m_i r_i^2) + 1/(I_j + m_j r_j^2)]^-1
   double spin_inertia;       // kg m^2, [1/I_i + 1/I_j]^-1, bounds the constant torque (rolling_constant_torque.hpp)
+  double mean_mass;          // kg, (m_i + m_j) / 2; m_i at a wall (tangential_blaze_viscous.hpp)
+  double tangential_mass;    // kg, [1/m_i + 1/m_j + a_i^2/I_i + a_j^2/I_j]^-1: what a tangential impulse at the contact point moves
 };
 
 // Bodies i and j (j unused for a wall) with overlap delta (m) and centre distance `distance` (m:
 // between the centres for a pair, from the centre to the wall's closest point for a wall). The
-// quantities the law's choices do not read are left 0 (and compiled out).
+// quantities the law's models do not declare they need are left 0 (and compiled out).
 template <LawChoices kLaw, SecondBody kSecond>
 [[gnu::always_inline]] inline ContactBodies reduce_bodies(const Body& i, const Body& j, double overlap,
                                                           double distance) {
@@ -43,11 +45,17 @@ template <LawChoices kLaw, SecondBody kSecond>
   b.lever = wall || kLaw.lever_arm == RollingLeverArm::effective_radius ? b.effective_radius : 0.5 * reach;
   // Both bodies' inertias are read whatever the choices (a load under a branch would keep the
   // batch loops from vectorising); the reductions are compiled for the choices that use them.
+  using Rolling = RollingModels::Model<kLaw.rolling>;
+  using Tangential = TangentialModels::Model<kLaw.tangential>;
   const double inv_ii = i.inv_inertia, inv_ij = j.inv_inertia;
-  b.rolling_inertia = !kLaw.rolling_dashpot ? 0.0
+  b.rolling_inertia = !Rolling::needs_rolling_inertia(kLaw) ? 0.0
                       : wall ? 1.0 / inv_ii + mi * ri * ri
                              : 1.0 / (1.0 / (1.0 / inv_ii + mi * ri * ri) + 1.0 / (1.0 / inv_ij + mj * rj * rj));
-  b.spin_inertia = kLaw.rolling != RollingModel::constant_torque ? 0.0 : wall ? 1.0 / inv_ii : 1.0 / (inv_ii + inv_ij);
+  b.spin_inertia = !Rolling::needs_spin_inertia ? 0.0 : wall ? 1.0 / inv_ii : 1.0 / (inv_ii + inv_ij);
+  b.mean_mass = !Tangential::needs_tangential_mass ? 0.0 : wall ? mi : 0.5 * (mi + mj);
+  b.tangential_mass = !Tangential::needs_tangential_mass ? 0.0
+                      : wall ? 1.0 / (1.0 / mi + b.arm_i * b.arm_i * inv_ii)
+                             : 1.0 / (1.0 / mi + 1.0 / mj + b.arm_i * b.arm_i * inv_ii + b.arm_j * b.arm_j * inv_ij);
   return b;
 }
 

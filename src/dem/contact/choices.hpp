@@ -7,6 +7,7 @@
 #include <cstddef>
 #include <string>
 #include <string_view>
+#include <type_traits>
 #include <vector>
 
 namespace trapdem {
@@ -16,10 +17,21 @@ enum class NormalModel {
   hertz,   // F_n = 4/3 E* sqrt(R*) delta^3/2 with Mindlin's tangential stiffness (normal_hertz.hpp)
 };
 
+enum class TangentialModel {
+  coulomb,        // incremental spring-dashpot capped by static/kinetic Coulomb friction (seed eq. 2)
+  blaze_viscous,  // Blaze-DEM's public code: a viscous force without spring or Coulomb cap (tangential_blaze_viscous.hpp)
+};
+
 enum class RollingModel {
   none,
   constant_torque,   // Ai et al. (2011) type A: M = mu_r R |F_n| opposing the relative rolling (seed eq. 5)
   elastic_plastic,   // Ai et al. (2011) type C (EPSD): spring torque capped at mu_r R |F_n|, dashpot below it
+  angular_damping,   // Blaze-DEM's public code: omega <- omega (1 - mu_r) per reference step (rolling_angular_damping.hpp)
+};
+
+enum class DampingModel {
+  restitution,        // c_n from e (damping.hpp)
+  restitution_blaze,  // the same with e lowered by 0.03808 for 0.3 <= e <= 0.9, as Blaze-DEM's input reader does
 };
 
 enum class RollingLeverArm {
@@ -50,12 +62,29 @@ struct ChoiceTable<NormalModel> {
   }};
 };
 template <>
+struct ChoiceTable<TangentialModel> {
+  static constexpr const char* what = "tangential model";
+  static constexpr std::array<ChoiceName<TangentialModel>, 2> values{{
+      {TangentialModel::coulomb, "coulomb"},
+      {TangentialModel::blaze_viscous, "blaze_viscous"},
+  }};
+};
+template <>
 struct ChoiceTable<RollingModel> {
   static constexpr const char* what = "rolling model";
-  static constexpr std::array<ChoiceName<RollingModel>, 3> values{{
+  static constexpr std::array<ChoiceName<RollingModel>, 4> values{{
       {RollingModel::none, "none"},
       {RollingModel::constant_torque, "constant_torque"},
       {RollingModel::elastic_plastic, "elastic_plastic"},
+      {RollingModel::angular_damping, "angular_damping"},
+  }};
+};
+template <>
+struct ChoiceTable<DampingModel> {
+  static constexpr const char* what = "damping model";
+  static constexpr std::array<ChoiceName<DampingModel>, 2> values{{
+      {DampingModel::restitution, "restitution"},
+      {DampingModel::restitution_blaze, "restitution_blaze"},
   }};
 };
 template <>
@@ -87,8 +116,9 @@ constexpr bool listed_in_order() {
     if (static_cast<std::size_t>(ChoiceTable<E>::values[k].value) != k) return false;
   return true;
 }
-static_assert(listed_in_order<NormalModel>() && listed_in_order<RollingModel>() &&
-              listed_in_order<RollingLeverArm>() && listed_in_order<RollingStiffness>());
+static_assert(listed_in_order<NormalModel>() && listed_in_order<TangentialModel>() && listed_in_order<RollingModel>() &&
+              listed_in_order<RollingLeverArm>() && listed_in_order<RollingStiffness>() &&
+              listed_in_order<DampingModel>());
 
 template <class E>
 constexpr const char* to_string(E value) {
@@ -110,9 +140,11 @@ template <class E>
 E parse_choice(std::string_view name);
 
 // The choices of one contact law, as the compiler sees them: a law instance is compiled for each
-// (a template argument of the batch loops), so that no branch on them is left in the loops.
+// (a template argument of the batch loops), so that no branch on them is left in the loops. The
+// damping model is not among them: it changes the dashpot's coefficient only (a parameter).
 struct LawChoices {
   NormalModel normal = NormalModel::linear;
+  TangentialModel tangential = TangentialModel::coulomb;
   RollingModel rolling = RollingModel::none;
   RollingLeverArm lever_arm = RollingLeverArm::average_radius;
   RollingStiffness rolling_stiffness = RollingStiffness::ai2011;
@@ -124,7 +156,8 @@ struct LawChoices {
   // matter for the rolling models that read them only): one instance per distinct law.
   constexpr LawChoices canonical() const {
     LawChoices c = *this;
-    if (c.rolling == RollingModel::none) c.lever_arm = RollingLeverArm::average_radius;
+    if (c.rolling == RollingModel::none || c.rolling == RollingModel::angular_damping)
+      c.lever_arm = RollingLeverArm::average_radius;
     if (c.rolling != RollingModel::elastic_plastic) {
       c.rolling_stiffness = RollingStiffness::ai2011;
       c.rolling_dashpot = false;
@@ -132,5 +165,47 @@ struct LawChoices {
     return c;
   }
 };
+
+// One axis of the law's choices: a member of LawChoices (an enum with its ChoiceTable, or a flag).
+template <auto kMember>
+struct LawAxis {
+  using Value = std::remove_cvref_t<decltype(LawChoices{}.*kMember)>;
+  static constexpr std::size_t count = [] {
+    if constexpr (std::is_same_v<Value, bool>)
+      return std::size_t{2};
+    else
+      return kChoiceCount<Value>;
+  }();
+  static constexpr std::size_t index(const LawChoices& c) { return static_cast<std::size_t>(c.*kMember); }
+  static constexpr void set(LawChoices& c, std::size_t k) { c.*kMember = static_cast<Value>(k); }
+};
+
+// The law's axes, numbered as a mixed-radix number (the first axis the most significant digit):
+// the dispatch table (law_dispatch.hpp) has one entry per number. A new axis is a member of
+// LawChoices and an entry here.
+template <class... Axes>
+struct LawAxisList {
+  static constexpr std::size_t kCount = (Axes::count * ... * std::size_t{1});
+  static constexpr std::size_t number_of(const LawChoices& c) {
+    std::size_t k = 0;
+    ((k = k * Axes::count + Axes::index(c)), ...);
+    return k;
+  }
+  static constexpr LawChoices numbered(std::size_t k) {
+    constexpr std::array<std::size_t, sizeof...(Axes)> counts{Axes::count...};
+    LawChoices c;
+    std::size_t axis = 0;
+    const auto digit = [&](std::size_t a) {
+      std::size_t place = 1;
+      for (std::size_t later = a + 1; later < counts.size(); ++later) place *= counts[later];
+      return (k / place) % counts[a];
+    };
+    ((Axes::set(c, digit(axis)), ++axis), ...);
+    return c;
+  }
+};
+using LawAxes = LawAxisList<LawAxis<&LawChoices::normal>, LawAxis<&LawChoices::tangential>,
+                            LawAxis<&LawChoices::rolling>, LawAxis<&LawChoices::lever_arm>,
+                            LawAxis<&LawChoices::rolling_stiffness>, LawAxis<&LawChoices::rolling_dashpot>>;
 
 }  // namespace trapdem

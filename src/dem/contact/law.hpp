@@ -1,61 +1,33 @@
 #pragma once
-// The contact law composed of its sub-models: normal (normal_linear.hpp, normal_hertz.hpp),
-// damping (damping.hpp), tangential with static/kinetic friction (tangential_coulomb.hpp) and
-// rolling (none, rolling_constant_torque.hpp, rolling_epsd.hpp). ContactEvaluator<choices> holds
-// the whole law for one set of choices; the pair and wall batch loops (pair_sweep.cpp,
-// wall_sweep.cpp) call it, each written once for every law (law_dispatch.hpp picks the instance).
-// Its branches on per-contact values must stay if-convertible (selects, no loads or stores of
-// memory under them) for those loops to vectorise.
+// The contact law composed of its sub-models (models.hpp lists them): normal (normal_linear.hpp,
+// normal_hertz.hpp), damping (damping.hpp), tangential (tangential_coulomb.hpp: spring with
+// static/kinetic friction; tangential_blaze_viscous.hpp) and rolling (rolling_none.hpp,
+// rolling_constant_torque.hpp, rolling_epsd.hpp, rolling_angular_damping.hpp).
+// ContactEvaluator<choices> holds the whole law for one set of choices; the pair and wall batch
+// loops (pair_sweep.cpp, wall_sweep.cpp) call it, each written once for every law
+// (law_dispatch.hpp picks the instance). Its branches on per-contact values must stay
+// if-convertible (selects, no loads or stores of memory under them) for those loops to vectorise.
+#include <cmath>
 #include <cstddef>
-#include <tuple>
 
 #include "dem/contact/bodies.hpp"
 #include "dem/contact/choices.hpp"
 #include "dem/contact/contact_history.hpp"
 #include "dem/contact/damping.hpp"
-#include "dem/contact/normal_hertz.hpp"
-#include "dem/contact/normal_linear.hpp"
-#include "dem/contact/rolling_constant_torque.hpp"
-#include "dem/contact/rolling_epsd.hpp"
-#include "dem/contact/tangential_coulomb.hpp"
+#include "dem/contact/models.hpp"
+#include "dem/contact/sub_model_inputs.hpp"
 #include "dem/vec3.hpp"
 
 namespace trapdem {
 
-// The normal models, each a struct with `model` (its NormalModel value), `damping_scale`,
-// `Params`, `params(law, particle_law)`, `respond(params, overlap, R*)` and
-// `time_scale(law, particle_law, mass, radius)`. A new model is added to this list.
-template <class... Models>
-struct NormalModelList {
-  // Each model's parameters, one base each (a trivially copyable block of doubles, unlike a
-  // std::tuple: WallLaws copies it as such): static_cast<const Model::Params&>(params).
-  struct Params : Models::Params... {};
-  static constexpr std::size_t index_of(NormalModel m) {
-    constexpr NormalModel listed[] = {Models::model...};
-    for (std::size_t k = 0; k < sizeof...(Models); ++k)
-      if (listed[k] == m) return k;
-    return sizeof...(Models);
-  }
-  template <NormalModel m>
-  using Model = std::tuple_element_t<index_of(m), std::tuple<Models...>>;
-  // f(Model{}) for the model of value m (a run-time choice: parameters, time step).
-  template <class F>
-  static auto visit(NormalModel m, F&& f) {
-    using R = decltype(f(std::tuple_element_t<0, std::tuple<Models...>>{}));
-    R result{};
-    ((m == Models::model ? (void)(result = f(Models{})) : (void)0), ...);
-    return result;
-  }
-};
-using NormalModels = NormalModelList<NormalLinear, NormalHertz>;
-
-// The parameters of every sub-model of one law (the normal model's of the law's choice only).
+// The parameters of every sub-model of one law (each axis's model of the law's choice only; the
+// others' are left at their defaults).
 struct LawParams {
   NormalModels::Params normal;
   RestitutionDamping::Params damping;
-  CoulombTangential::Params tangential;
-  double mu_r = 0.0;   // rolling friction: M_max = mu_r R |F_n| (seed eq. 5)
-  double eta_r = 0.0;  // EPSD dashpot's damping ratio
+  TangentialModels::Params tangential;
+  double mu_r = 0.0;  // rolling friction: M_max = mu_r R |F_n| (seed eq. 5); Blaze's angular damping
+  RollingModels::Params rolling;
 };
 
 // The law's parameters from the user's: `law` is the particle law or a wall's; a Hertz wall
@@ -73,9 +45,12 @@ template <LawChoices kLaw>
 struct ContactEvaluator {
   static_assert(kLaw == kLaw.canonical(), "one instance per distinct law: use canonical choices");
   using Normal = NormalModels::Model<kLaw.normal>;
+  using Tangential = TangentialModels::Model<kLaw.tangential>;
+  using Rolling = RollingModels::Model<kLaw.rolling>;
 
   // normal: unit vector from body j towards body i; overlap > 0 (m); relative_velocity: v_i - v_j
-  // of the centres (m/s); w_i, w_j angular velocities (rad/s).
+  // of the centres (m/s); w_i, w_j angular velocities (rad/s). Marks the history touching (and
+  // sliding as the tangential model says): every law keeps its contacts across list rebuilds.
   [[gnu::always_inline]] static ContactForce evaluate(const LawParams& p, const ContactBodies& b, const Vec3& n,
                                                       double overlap, const Vec3& relative_velocity, const Vec3& w_i,
                                                       const Vec3& w_j, ContactHistory& h, double dt) {
@@ -91,22 +66,41 @@ struct ContactEvaluator {
     const double fn = r.elastic_force - c_n * vn;
     const double fn_abs = std::fabs(fn);
 
-    const double c_t = c_n * r.sqrt_tangential_over_normal;
-    const Vec3 ft = CoulombTangential::force(p.tangential, h, n, vt, r.tangential_stiffness, c_t, fn_abs, dt);
+    TangentialInputs tangential_in;
+    tangential_in.normal = n;
+    tangential_in.slip_velocity = vt;
+    tangential_in.normal_force = fn_abs;
+    tangential_in.stiffness = r.tangential_stiffness;
+    tangential_in.dashpot = c_n * r.sqrt_tangential_over_normal;
+    tangential_in.centre_speed = Tangential::needs_tangential_mass ? norm(relative_velocity) : 0.0;
+    tangential_in.mean_mass = b.mean_mass;
+    tangential_in.tangential_mass = b.tangential_mass;
+    tangential_in.dt = dt;
+    const TangentialResponse t =
+        Tangential::force(static_cast<const typename Tangential::Params&>(p.tangential), h, tangential_in);
+    h.flags = ContactHistory::kTouching | (t.sliding ? ContactHistory::kSliding : 0u);
 
     Vec3 rolling_torque{};
-    if constexpr (kLaw.rolling != RollingModel::none) {
+    if constexpr (Rolling::has_torque) {
       // Relative rolling: the relative angular velocity less its twist about the normal.
       Vec3 wr = w_i - w_j;
       wr -= dot(wr, n) * n;
-      const double m_max = p.mu_r * b.lever * fn_abs;  // seed eq. 5
-      if constexpr (kLaw.rolling == RollingModel::constant_torque)
-        rolling_torque = ConstantTorqueRolling::torque(wr, m_max, b.spin_inertia, dt);
-      else
-        rolling_torque = EpsdRolling::torque<kLaw.rolling_stiffness, kLaw.rolling_dashpot>(
-            h, n, wr, p.mu_r, m_max, b.lever, r.stiffness, r.tangential_stiffness, p.eta_r, b.rolling_inertia, dt);
+      const RollingInputs rolling_in{n,
+                                     wr,
+                                     p.mu_r * b.lever * fn_abs,  // seed eq. 5
+                                     p.mu_r,
+                                     b.lever,
+                                     r.stiffness,
+                                     r.tangential_stiffness,
+                                     b.rolling_inertia,
+                                     b.spin_inertia,
+                                     dt};
+      rolling_torque =
+          Rolling::template torque<kLaw>(static_cast<const typename Rolling::Params&>(p.rolling), h, rolling_in);
     }
-    return {fn * n + ft, Vec3{ft.x, ft.y, ft.z}, rolling_torque, fn};
+    // The tangential part copied member by member: an aggregate copy of t.force keeps GCC from
+    // turning the batch loops' structs into scalars, and the loops then do not vectorise.
+    return {fn * n + t.force, Vec3{t.force.x, t.force.y, t.force.z}, rolling_torque, fn};
   }
 };
 

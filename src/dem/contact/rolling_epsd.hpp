@@ -5,24 +5,37 @@
 
 #include "dem/contact/choices.hpp"
 #include "dem/contact/contact_history.hpp"
+#include "dem/contact/sub_model_inputs.hpp"
+#include "dem/contact_law.hpp"
 #include "dem/vec3.hpp"
 
 namespace trapdem {
 
 struct EpsdRolling {
-  // The torque on body i for the normal n, relative rolling velocity wr (rad/s), rolling
-  // friction mu_r, limit m_max = mu_r R |F_n| (N m), lever R (m), the normal model's k_n and k_t
-  // (N/m), the dashpot's damping ratio eta_r (Ai et al. 2011 use 0.3) and the rolling inertia
-  // (kg m^2); updates the history's rolling spring.
-  template <RollingStiffness kStiffness, bool kDashpot>
-  [[gnu::always_inline]] static Vec3 torque(ContactHistory& h, const Vec3& n, const Vec3& wr, double mu_r,
-                                            double m_max, double lever, double kn, double kt, double eta_r,
-                                            double rolling_inertia, double dt) {
-    const double kr = kStiffness == RollingStiffness::tangential ? kt * lever * lever
-                                                                 : 2.25 * kn * mu_r * mu_r * lever * lever;
+  static constexpr RollingModel model = RollingModel::elastic_plastic;
+  static constexpr bool has_torque = true;
+  static constexpr bool keeps_rolling_spring = true;
+  static constexpr bool damps_spin = false;
+  static constexpr bool needs_spin_inertia = false;
+  static constexpr bool needs_rolling_inertia(const LawChoices& law) { return law.rolling_dashpot; }
+  struct Params {
+    double eta_r = 0.0;  // the dashpot's damping ratio (Ai et al. 2011 use 0.3)
+  };
+  static Params params(const ContactLaw& law) { return {law.rolling_damping}; }
+
+  // The torque on body i; updates the history's rolling spring. The stiffness k_r and whether the
+  // dashpot is on are the law's choices (rolling_stiffness, rolling_dashpot).
+  template <LawChoices kLaw>
+  [[gnu::always_inline]] static Vec3 torque(const Params& p, ContactHistory& h, const RollingInputs& in) {
+    const double lever = in.lever;
+    const double kr = kLaw.rolling_stiffness == RollingStiffness::tangential
+                          ? in.tangential_stiffness * lever * lever
+                          : 2.25 * in.normal_stiffness * in.rolling_friction * in.rolling_friction * lever * lever;
+    const Vec3& n = in.normal;
+    const double m_max = in.limit;
     Vec3 mk = h.rolling_spring;
     mk -= dot(mk, n) * n;
-    mk -= kr * dt * wr;
+    mk -= kr * in.dt * in.rolling_velocity;
     const double mk2 = norm2(mk);
     Vec3 rolling_torque;
     if (mk2 > m_max * m_max) {
@@ -30,7 +43,8 @@ struct EpsdRolling {
       rolling_torque = mk;
     } else {
       rolling_torque = mk;
-      if (kDashpot) rolling_torque -= (eta_r * 2.0 * std::sqrt(rolling_inertia * kr)) * wr;
+      if (kLaw.rolling_dashpot)
+        rolling_torque -= (p.eta_r * 2.0 * std::sqrt(in.rolling_inertia * kr)) * in.rolling_velocity;
     }
     h.rolling_spring = mk;
     return rolling_torque;

@@ -2,22 +2,29 @@
 // Tangential force: an incremental spring-dashpot (the seed paper's eq. 2) capped by static and
 // kinetic Coulomb friction. Its stiffness comes from the normal model (constant k_t for the
 // linear spring, Mindlin's 8 G* a for Hertz).
+#include "dem/contact/choices.hpp"
 #include "dem/contact/contact_history.hpp"
+#include "dem/contact/sub_model_inputs.hpp"
+#include "dem/contact_law.hpp"
 #include "dem/vec3.hpp"
 
 namespace trapdem {
 
 struct CoulombTangential {
+  static constexpr TangentialModel model = TangentialModel::coulomb;
+  static constexpr bool needs_tangential_mass = false;
   struct Params {
     double mu_s = 0.0;  // the stick limit |F_t| <= mu_s |F_n|
     double mu_k = 0.0;  // |F_t| = mu_k |F_n| while sliding
   };
+  static Params params(const ContactLaw& law) { return {law.static_friction, law.kinetic_friction}; }
 
-  // The tangential force on body i for the normal n, the tangential relative velocity vt (m/s)
-  // of the contact points, stiffness kt (N/m), dashpot c_t (N s/m) and |F_n| (N); updates the
-  // history's spring and flags.
-  [[gnu::always_inline]] static Vec3 force(const Params& p, ContactHistory& h, const Vec3& n, const Vec3& vt, double kt,
-                                           double c_t, double fn_abs, double dt) {
+  // The tangential force on body i; updates the history's spring (the evaluator sets the flags
+  // from the returned `sliding`).
+  [[gnu::always_inline]] static TangentialResponse force(const Params& p, ContactHistory& h, const TangentialInputs& in) {
+    const Vec3& n = in.normal;
+    const Vec3& vt = in.slip_velocity;
+    const double kt = in.stiffness, c_t = in.dashpot, fn_abs = in.normal_force;
     // The spring is first turned into the current tangent plane with its length kept (the
     // contact has rotated since the last step). The contact turns by a tiny angle per step in a
     // dense, slow packing; when the spring's out-of-plane part x = (s.n)^2 / |s|^2 is below 1e-12
@@ -34,7 +41,7 @@ struct CoulombTangential {
     } else {
       s -= sn * n;
     }
-    s += vt * dt;
+    s += vt * in.dt;
     Vec3 ft = -kt * s - c_t * vt;
 
     // Sticking holds while |F_t| <= mu_s |F_n|; beyond it the contact slides, and a sliding
@@ -54,8 +61,7 @@ struct CoulombTangential {
       s = kt > 0.0 ? -(ft + c_t * vt) / kt : Vec3{};
     }
     h.tangential_spring = s;
-    h.flags = ContactHistory::kTouching | (sliding ? ContactHistory::kSliding : 0u);
-    return ft;
+    return {ft, sliding};
   }
 };
 
