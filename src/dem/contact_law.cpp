@@ -12,7 +12,7 @@
 namespace trapdem {
 
 bool ContactLaw::uses_reference_time_step() const {
-  return tangential_model == TangentialModel::blaze_viscous ||
+  return tangential_model == TangentialModel::blaze_viscous || tangential_model == TangentialModel::blaze_tresca ||
          (rolling_model == RollingModel::angular_damping && rolling_friction > 0.0);
 }
 
@@ -55,8 +55,8 @@ void ContactLaw::validate(const std::string& where) const {
   if (uses_reference_time_step()) {
     if (!(reference_time_step > 0.0) || !std::isfinite(reference_time_step))
       fail(where, "reference_time_step", reference_time_step,
-           "a positive time step in s (Blaze-DEM's dt: tangential_model = \"blaze_viscous\" and rolling_model = "
-           "\"angular_damping\" take their rates from it)");
+           "a positive time step in s (Blaze-DEM's dt: tangential_model = \"blaze_viscous\" or \"blaze_tresca\" and "
+           "rolling_model = \"angular_damping\" take their scales from it)");
     if (!(blaze_velocity_scale > 0.0) || !std::isfinite(blaze_velocity_scale))
       fail(where, "blaze_velocity_scale", blaze_velocity_scale, "a positive speed in m/s");
     if (!(blaze_rest_speed > 0.0) || !std::isfinite(blaze_rest_speed))

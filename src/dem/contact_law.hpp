@@ -19,13 +19,13 @@ struct ContactLaw {
   DampingModel damping_model = DampingModel::restitution;
   TangentialModel tangential_model = TangentialModel::coulomb;
   double static_friction = 0.5;           // mu_s: the stick limit |F_t| <= mu_s |F_n|
-  double kinetic_friction = 0.5;          // mu_k: |F_t| = mu_k |F_n| while sliding (blaze_viscous: its strength)
+  double kinetic_friction = 0.5;          // mu_k: |F_t| = mu_k |F_n| while sliding (the Blaze models: their strength)
   double rolling_friction = 0.0;          // mu_r (dimensionless): M_max = mu_r R |F_n|; angular_damping: 1 - mu_r per reference step
   RollingModel rolling_model = RollingModel::none;
   RollingLeverArm lever_arm = RollingLeverArm::average_radius;
   RollingStiffness rolling_stiffness = RollingStiffness::ai2011;
   double rolling_damping = 0.3;           // eta_r of the EPSD dashpot (Ai et al. 2011 use 0.3)
-  // Blaze-DEM's law (tangential_blaze_viscous.hpp, rolling_angular_damping.hpp): its time step
+  // Blaze-DEM's law (tangential_blaze_viscous.hpp, tangential_blaze_tresca.hpp, rolling_angular_damping.hpp): its time step
   // sets the tangential force's scale and the angular damping's rate.
   double reference_time_step = 0.0;       // s, dt_ref (0: unset; required by those models)
   double blaze_velocity_scale = 5.0e-4;   // m/s, u0 (Blaze's literal 0.05 cm/s)

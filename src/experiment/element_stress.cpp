@@ -1,5 +1,7 @@
 #include "experiment/element_stress.hpp"
 
+#include <limits>
+
 #include <fmt/format.h>
 
 #include "core/errors.hpp"
@@ -62,6 +64,14 @@ Stress3 interior_contact_stress(const Simulation& sim, const ElementBox& box, do
   }
   const Particles& p = sim.particles();
   const ContactLaw& law = sim.particle_law();
+  // A tangential force that is not a spring's (Blaze-DEM's viscous force) cannot be recomputed
+  // from the history: the interior stress is not measured then (NaN, as for a specimen too small).
+  if (!tangential_force_is_spring(law_choices(law))) {
+    Stress3 unmeasured{};
+    for (auto& row : unmeasured)
+      for (double& x : row) x = std::numeric_limits<double>::quiet_NaN();
+    return unmeasured;
+  }
   const LawParams params = law_params(law, law);
   const Domain& domain = sim.settings().domain;
   const PairList pairs = sim.pairs();

@@ -49,7 +49,8 @@ Stress3 love_weber_stress(const Simulation& sim, const ElementBox& box);
 // k_t |s|, left out: a relative error of the order of the inertial number). The pairs straddling
 // the sub-box's faces are counted whole when their contact point is in: a surface error of the
 // order d / L_in in both the normal and the shear components alike (the stress ratio keeps it to
-// second order). `margin` must leave an interior: throws SimulationError otherwise.
+// second order). `margin` must leave an interior: throws SimulationError otherwise. NaN for a
+// tangential model whose force is not its spring's (tangential_force_is_spring).
 Stress3 interior_contact_stress(const Simulation& sim, const ElementBox& box, double margin);
 
 }  // namespace trapdem

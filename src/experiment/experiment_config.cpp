@@ -92,8 +92,8 @@ ContactLaw read_contact_law(Config table, const ContactLaw& base) {
   } else {
     for (const char* key : {"reference_time_step", "blaze_velocity_scale", "blaze_rest_speed"})
       if (table.has(key))
-        table.fail(key, "no Blaze-DEM reference with this law (read only with tangential_model = \"blaze_viscous\" "
-                        "or rolling_model = \"angular_damping\" and rolling_friction > 0); remove the key");
+        table.fail(key, "no Blaze-DEM reference with this law (read only with tangential_model = \"blaze_viscous\" or "
+                        "\"blaze_tresca\", or rolling_model = \"angular_damping\" and rolling_friction > 0); remove the key");
     law.reference_time_step = base.reference_time_step;
     law.blaze_velocity_scale = base.blaze_velocity_scale;
     law.blaze_rest_speed = base.blaze_rest_speed;

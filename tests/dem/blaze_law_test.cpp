@@ -139,6 +139,40 @@ TEST(BlazeViscous, SphereOnAFloorNeverGainsEnergyAndEndsRolling) {
   }
 }
 
+// The Tresca reading: a contact sheared at a constant slip rate loads its spring elastically
+// (F_t = -k_t s, s = v_t t) until |F_t| reaches S = mu_k (m_i + m_j)/2 u0 / dt_ref, and then carries
+// S whatever F_n: the same S at two normal forces a decade apart (to 1e-12 relative: round-off).
+TEST(BlazeTresca, SpringCappedAtAStrengthIndependentOfTheNormalForce) {
+  constexpr LawChoices kTresca{.tangential = TangentialModel::blaze_tresca};
+  ContactLaw law = blaze_law(0.5);
+  law.tangential_model = TangentialModel::blaze_tresca;
+  law.restitution = 1.0;  // no dashpot: the spring's force alone
+  const double m = sphere_mass(kRadius, kDensity);
+  const double strength = 0.5 * m * 5.0e-4 / kReferenceStep;  // N
+  const Body body{m, kRadius, 1.0 / (0.4 * m * kRadius * kRadius)};
+  const LawParams params = law_params(law, law);
+  const double dt = 1e-6, slip = 1e-3;  // s, m/s
+  for (const double overlap : {1e-7, 1e-6}) {
+    const ContactBodies b = reduce_bodies<kTresca, SecondBody::sphere>(body, body, overlap, 2 * kRadius - overlap);
+    ContactHistory h;
+    bool capped = false;
+    for (int step = 1; step <= 200000 && !capped; ++step) {
+      const ContactForce f = ContactEvaluator<kTresca>::evaluate(params, b, {0, 0, 1}, overlap, {slip, 0, 0}, Vec3{},
+                                                                 Vec3{}, h, dt);
+      const double elastic = law.tangential_stiffness * slip * dt * step;
+      if (elastic < strength) {
+        ASSERT_NEAR(f.tangential.x, -elastic, 1e-9 * strength) << step;
+        ASSERT_FALSE(h.sliding());
+      } else {
+        EXPECT_NEAR(f.tangential.x, -strength, 1e-12 * strength);
+        EXPECT_TRUE(h.sliding());
+        capped = true;
+      }
+    }
+    EXPECT_TRUE(capped) << overlap;
+  }
+}
+
 // omega <- omega (1 - mu_r) per reference step, applied at that rate in time: a free spinning
 // sphere at two engine steps has omega(t) = omega0 (1 - mu_r)^(t / dt_ref) at each, to 1e-12
 // relative (the per-step factor's round-off over a few hundred steps).

@@ -141,7 +141,8 @@ struct KernelSetup {
     set(law);
     const double m = sphere_mass(kRadius, kDensity);
     b = {.effective_mass = m, .effective_radius = kRadius, .arm_i = kRadius, .arm_j = 0.0, .lever = kRadius,
-         .rolling_inertia = 1.4 * m * kRadius * kRadius, .spin_inertia = 0.4 * m * kRadius * kRadius};
+         .rolling_inertia = 1.4 * m * kRadius * kRadius, .spin_inertia = 0.4 * m * kRadius * kRadius,
+         .mean_mass = m, .tangential_mass = m / 3.5};
   }
   void set(const ContactLaw& law) {
     ASSERT_TRUE(law_choices(law) == LawChoices{});  // the law evaluated below: linear, no rolling resistance

@@ -229,7 +229,7 @@ const std::vector<BadConfig>& cases() {
        "tangential_model = \"viscous\"\n"
        "[pluviation]\n"
        "count = 100\n",
-       2, "contact.tangential_model", "expected one of \"coulomb\", \"blaze_viscous\""},
+       2, "contact.tangential_model", "expected one of \"coulomb\", \"blaze_viscous\", \"blaze_tresca\""},
       {"BlazeViscousWithoutReferenceStep",
        "[contact]\n"
        "tangential_model = \"blaze_viscous\"\n"

@@ -20,6 +20,7 @@ enum class NormalModel {
 enum class TangentialModel {
   coulomb,        // incremental spring-dashpot capped by static/kinetic Coulomb friction (seed eq. 2)
   blaze_viscous,  // Blaze-DEM's public code: a viscous force without spring or Coulomb cap (tangential_blaze_viscous.hpp)
+  blaze_tresca,   // the strength Blaze's force makes, as a spring capped at it: stable at any step (tangential_blaze_tresca.hpp)
 };
 
 enum class RollingModel {
@@ -64,9 +65,10 @@ struct ChoiceTable<NormalModel> {
 template <>
 struct ChoiceTable<TangentialModel> {
   static constexpr const char* what = "tangential model";
-  static constexpr std::array<ChoiceName<TangentialModel>, 2> values{{
+  static constexpr std::array<ChoiceName<TangentialModel>, 3> values{{
       {TangentialModel::coulomb, "coulomb"},
       {TangentialModel::blaze_viscous, "blaze_viscous"},
+      {TangentialModel::blaze_tresca, "blaze_tresca"},
   }};
 };
 template <>

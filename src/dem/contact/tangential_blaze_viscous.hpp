@@ -31,6 +31,7 @@ namespace trapdem {
 struct BlazeViscousTangential {
   static constexpr TangentialModel model = TangentialModel::blaze_viscous;
   static constexpr bool needs_tangential_mass = true;
+  static constexpr bool carries_spring_force = false;  // no spring: the force follows the velocities
   struct Params {
     double strength_rate = 0.0;  // m/s^2, mu_k u0 / dt_ref
     double rest_speed = 0.0;     // m/s, V when the centres' relative speed is exactly 0 (Blaze: 1 cm/s)

@@ -5,6 +5,7 @@
 #include "dem/contact/choices.hpp"
 #include "dem/contact/contact_history.hpp"
 #include "dem/contact/sub_model_inputs.hpp"
+#include "dem/contact/tangential_spring.hpp"
 #include "dem/contact_law.hpp"
 #include "dem/vec3.hpp"
 
@@ -13,6 +14,7 @@ namespace trapdem {
 struct CoulombTangential {
   static constexpr TangentialModel model = TangentialModel::coulomb;
   static constexpr bool needs_tangential_mass = false;
+  static constexpr bool carries_spring_force = true;  // F_t = -k_t s at rest (element_stress.cpp)
   struct Params {
     double mu_s = 0.0;  // the stick limit |F_t| <= mu_s |F_n|
     double mu_k = 0.0;  // |F_t| = mu_k |F_n| while sliding
@@ -25,23 +27,7 @@ struct CoulombTangential {
     const Vec3& n = in.normal;
     const Vec3& vt = in.slip_velocity;
     const double kt = in.stiffness, c_t = in.dashpot, fn_abs = in.normal_force;
-    // The spring is first turned into the current tangent plane with its length kept (the
-    // contact has rotated since the last step). The contact turns by a tiny angle per step in a
-    // dense, slow packing; when the spring's out-of-plane part x = (s.n)^2 / |s|^2 is below 1e-12
-    // the rescaling 1 / sqrt(1 - x) differs from 1 by less than 5e-13, and the square root and
-    // division (a sixth of the pair loop's time) are skipped.
-    Vec3 s = h.tangential_spring;
-    const double s2 = norm2(s);
-    const double sn = dot(s, n);
-    const double sn2 = sn * sn;
-    if (sn2 > 1e-12 * s2) {
-      const Vec3 in_plane = s - sn * n;
-      const double p2 = norm2(in_plane);
-      s = p2 > 0.0 ? in_plane * std::sqrt(s2 / p2) : Vec3{};
-    } else {
-      s -= sn * n;
-    }
-    s += vt * in.dt;
+    Vec3 s = advanced_spring(h.tangential_spring, n, vt, in.dt);
     Vec3 ft = -kt * s - c_t * vt;
 
     // Sticking holds while |F_t| <= mu_s |F_n|; beyond it the contact slides, and a sliding
