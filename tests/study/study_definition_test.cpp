@@ -178,6 +178,34 @@ TEST(StudyDefinition, ThePaperStudyResolvesAtEveryScale) {
   }
 }
 
+// The seed-law study (issue 36) is paper-table2's cases with Blaze-DEM's law: at every scale each
+// case resolves with the Blaze models and Table 2's mu_k, mu_r, and at paper-fast it is
+// paper-table2's paper-fast case but for the contact law's models.
+TEST(StudyDefinition, TheSeedLawStudyIsThePaperStudyWithBlazeDemsLaw) {
+  const fs::path studies = fs::path(TRAPDEM_SOURCE_DIR) / "studies";
+  const StudyDefinition seed = load_study(studies / "seed-law.toml");
+  const StudyDefinition ours = load_study(studies / "paper-table2.toml");
+  ASSERT_EQ(seed.cases.size(), ours.cases.size());
+  for (std::size_t k = 0; k < seed.cases.size(); ++k) {
+    for (const StudyScale& scale : seed.scales) {
+      Config c = Config::parse(resolved_case_configuration(seed.cases[k], scale, app::preset_directory()), "study");
+      EXPECT_EQ(c.require_value_text("contact.tangential_model"), "\"blaze_tresca\"") << scale.name;
+      EXPECT_EQ(c.require_value_text("contact.rolling_model"), "\"angular_damping\"") << scale.name;
+      EXPECT_EQ(c.require_value_text("contact.damping_model"), "\"restitution_blaze\"") << scale.name;
+      EXPECT_DOUBLE_EQ(c.get_double("contact.reference_time_step", 0.0), 2.0e-9) << scale.name;
+    }
+    Config blaze =
+        Config::parse(resolved_case_configuration(seed.cases[k], seed.scale("paper-fast"), app::preset_directory()), "study");
+    Config textbook =
+        Config::parse(resolved_case_configuration(ours.cases[k], ours.scale("paper-fast"), app::preset_directory()), "study");
+    for (const char* key : {"contact.normal_stiffness", "contact.tangential_stiffness", "contact.static_friction",
+                            "contact.kinetic_friction", "contact.rolling_friction", "contact.restitution",
+                            "numerics.time_step_fraction", "pluviation.flow_rate", "pluviation.drop_height",
+                            "pluviation.count", "trapdoor.rate", "trapdoor.travel", "spin_up.g_level"})
+      EXPECT_EQ(blaze.require_value_text(key), textbook.require_value_text(key)) << seed.cases[k].name << " " << key;
+  }
+}
+
 // A relative packing.from under a case's `set` names a file beside the study file (as the scale's
 // `config` does), whatever the working folder, which here holds another packing of the same name:
 // the case's runs get the path absolute, and the packing read is the study folder's (3 spheres,
