@@ -1,5 +1,6 @@
 #include "experiment/ground_reaction.hpp"
 
+#include <cmath>
 #include <sstream>
 
 #include <fmt/format.h>
@@ -45,6 +46,9 @@ std::vector<GroundReactionRow> parse_ground_reaction_csv(const std::string& text
       } catch (const std::exception&) {
         throw InputError(fmt::format("{}:{}: '{}' is not a number", source, number, cell));
       }
+      // stod reads "nan" and "inf": trapdem never writes them (a damaged or hand-edited file).
+      if (!std::isfinite(v.back()))
+        throw InputError(fmt::format("{}:{}: column {} is '{}': expected a finite number", source, number, v.size(), cell));
     }
     if (v.size() != 12) throw InputError(fmt::format("{}:{}: expected 12 columns, found {}", source, number, v.size()));
     GroundReactionRow r;

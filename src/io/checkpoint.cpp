@@ -5,6 +5,7 @@
 #include "core/errors.hpp"
 #include "io/atomic_file.hpp"
 #include "io/hdf5_file.hpp"
+#include "io/particle_checks.hpp"
 
 namespace trapdem {
 
@@ -75,6 +76,13 @@ Particles read_particles(const Hdf5Group& g) {
     if (size != n)
       throw FileError(fmt::format("{}: particle arrays differ in length ({} ids, an array of {})", g.describe(), n, size));
   }
+  const std::string where = g.describe();
+  check_particle_rows(where, p.id, p.position, p.radius, p.velocity, p.angular_velocity, /*distinct_ids=*/false);
+  check_positive_column(where, "mass (kg)", p.id, p.mass);
+  check_positive_column(where, "inv_mass (1/kg)", p.id, p.inv_mass);
+  check_positive_column(where, "inv_inertia (1/(kg m^2))", p.id, p.inv_inertia);
+  check_finite_column(where, "force (N)", p.id, p.force);
+  check_finite_column(where, "torque (N m)", p.id, p.torque);
   return p;
 }
 

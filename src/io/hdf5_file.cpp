@@ -242,7 +242,11 @@ std::string Hdf5Group::describe(std::string_view name) const {
 
 bool Hdf5Group::has(std::string_view name) const {
   const std::string key(name);
-  return H5Lexists(id(), key.c_str(), H5P_DEFAULT) > 0;
+  const htri_t exists = H5Lexists(id(), key.c_str(), H5P_DEFAULT);
+  // Negative: HDF5 could not tell (damaged metadata, or a path through a missing group), not "absent".
+  if (exists < 0 && name.find('/') == std::string_view::npos)
+    fail(describe(), fmt::format("cannot tell whether '{}' exists (the file is damaged)", name));
+  return exists > 0;
 }
 
 Hdf5Group Hdf5Group::create_group(std::string_view name) const {
@@ -406,7 +410,10 @@ void Hdf5Group::set_string_attribute(std::string_view name, std::string_view val
 
 bool Hdf5Group::has_attribute(std::string_view name) const {
   const std::string key(name);
-  return H5Aexists(id(), key.c_str()) > 0;
+  const htri_t exists = H5Aexists(id(), key.c_str());
+  // Negative: HDF5 could not tell (damaged metadata), which is not "absent".
+  if (exists < 0) fail(describe(), fmt::format("cannot tell whether attribute '{}' exists (the file is damaged)", name));
+  return exists > 0;
 }
 
 double Hdf5Group::double_attribute(std::string_view name) const {

@@ -1,10 +1,14 @@
 #include "io/snapshot.hpp"
 
+#include <cmath>
+
 #include <fmt/format.h>
 
+#include "core/errors.hpp"
 #include "core/text_escape.hpp"
 #include "io/atomic_file.hpp"
 #include "io/hdf5_file.hpp"
+#include "io/particle_checks.hpp"
 
 namespace trapdem {
 
@@ -32,19 +36,35 @@ void ensure_vertex_index(const Hdf5Group& root, std::size_t n) {
 
 std::string group_name(std::size_t index) { return fmt::format("{:06d}", index); }
 
-double attribute_or(const Hdf5Group& g, const char* name, double fallback) {
-  return g.has_attribute(name) ? g.double_attribute(name) : fallback;
+// Whether a snapshot attribute is there to read. trapdem writes every one of them, so in its own
+// files (`own`: the index says format = "trapdem-snapshots") a missing one is damage, named; a file
+// written by another tool may leave them out (docs/output.md: they default to 0 and "").
+bool has_snapshot_attribute(const Hdf5Group& g, const char* name, bool own) {
+  if (g.has_attribute(name)) return true;
+  if (own)
+    throw FileError(fmt::format("{}: attribute '{}' missing or unreadable: trapdem writes it with every snapshot "
+                                "(the file is damaged)", g.describe(), name));
+  return false;
 }
 
-SnapshotInfo info_of(const Hdf5Group& g, const std::string& name) {
+SnapshotInfo info_of(const Hdf5Group& g, const std::string& name, bool own) {
   SnapshotInfo info;
   info.name = name;
-  info.time = attribute_or(g, "time", 0.0);
-  info.stage = g.has_attribute("stage") ? g.string_attribute("stage") : "";
-  info.trapdoor_displacement = attribute_or(g, "trapdoor_displacement", 0.0);
-  info.step = g.has_attribute("step") ? g.int_attribute("step") : 0;
+  info.time = has_snapshot_attribute(g, "time", own) ? g.double_attribute("time") : 0.0;
+  info.stage = has_snapshot_attribute(g, "stage", own) ? g.string_attribute("stage") : "";
+  info.trapdoor_displacement =
+      has_snapshot_attribute(g, "trapdoor_displacement", own) ? g.double_attribute("trapdoor_displacement") : 0.0;
+  info.step = has_snapshot_attribute(g, "step", own) ? g.int_attribute("step") : 0;
+  if (!std::isfinite(info.time) || !std::isfinite(info.trapdoor_displacement))
+    throw FileError(fmt::format("{}: time {} s, trapdoor_displacement {} m: expected finite numbers (the file is damaged)",
+                                g.describe(), info.time, info.trapdoor_displacement));
   info.particle_count = g.dataset_length("id");
   return info;
+}
+
+// Whether the index is trapdem's own (format = "trapdem-snapshots").
+bool written_by_trapdem(const Hdf5File& file) {
+  return file.has_attribute("format") && file.string_attribute("format") == kFormat;
 }
 
 // Where a snapshot's datasets are, for the XDMF: "snapshots/000003.h5:/" (its own file, the index
@@ -65,7 +85,7 @@ std::vector<SnapshotInfo> list_in(const Hdf5File& file) {
   const Hdf5Group root = file.group(kRoot);
   const std::string index_name = fs::path(file.file_name()).filename().string();
   for (const std::string& name : root.children()) {
-    out.push_back(info_of(root.group(name), name));
+    out.push_back(info_of(root.group(name), name, written_by_trapdem(file)));
     out.back().location = data_location(root, index_name, name);
   }
   return out;
@@ -196,7 +216,7 @@ std::vector<SnapshotInfo> list_snapshots(const fs::path& h5_path) { return list_
 Snapshot read_snapshot(const fs::path& h5_path, const std::string& name) {
   const Hdf5File file = Hdf5File::open_read(h5_path);
   const Hdf5Group g = file.group(kRoot).group(name);
-  const SnapshotInfo info = info_of(g, name);
+  const SnapshotInfo info = info_of(g, name, written_by_trapdem(file));
   Snapshot s;
   s.time = info.time;
   s.stage = info.stage;
@@ -214,6 +234,7 @@ Snapshot read_snapshot(const fs::path& h5_path, const std::string& name) {
     if (size != n)
       throw FileError(fmt::format("{}: datasets differ in length ({} ids, a dataset of {})", g.describe(), n, size));
   }
+  check_particle_rows(g.describe(), s.id, s.position, s.radius, s.velocity, s.angular_velocity);
   return s;
 }
 

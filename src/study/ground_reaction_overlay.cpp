@@ -46,6 +46,9 @@ std::vector<std::string> write_ground_reaction_overlay(const fs::path& out, cons
                                    run.trapdoor_csv().string()));
     }
     curves.push_back(parse_ground_reaction_csv(read_text_file(run.trapdoor_csv()), run.trapdoor_csv().string()));
+    if (curves.back().empty())
+      throw InputError(fmt::format("{}: no rows after the header (the run has not reached its lowering): no curve to draw",
+                                   run.trapdoor_csv().string()));
     names.push_back(specimen.name);
     widths.push_back(specimen.trapdoor.width);
   }
