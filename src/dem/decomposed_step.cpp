@@ -50,6 +50,12 @@ int Simulation::kick_owned() {
   const SecondHalfKick kick = second_half_kick();
   const std::size_t n = owned_count();
   int any_bad = 0;
+  if (frame_) {  // a loop of its own: the uniform-gravity loop below stays as it was
+    const FrameSecondHalfKick in_frame{kick, p_.position.data(), FrameKick(*frame_, time_, 0.5 * dt_)};
+#pragma omp parallel for schedule(static) reduction(| : any_bad)
+    for (std::size_t i = 0; i < n; ++i) any_bad |= in_frame(i);
+    return any_bad;
+  }
 #pragma omp parallel for schedule(static) reduction(| : any_bad)
   for (std::size_t i = 0; i < n; ++i) any_bad |= kick(i);
   return any_bad;

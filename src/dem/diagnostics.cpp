@@ -103,11 +103,16 @@ double Simulation::rotational_kinetic_energy() const {
 double Simulation::potential_energy(double reference_height) const {
   const Vec3 g = gravity();
   const double g_len = norm(g);
-  if (g_len == 0.0) return 0.0;
-  const Vec3 up = -g / g_len;
   double e = 0.0;
-  for (std::size_t i = 0; i < owned_count(); ++i)
-    e += p_.mass[i] * g_len * (dot(p_.position[i], up) - reference_height);
+  if (g_len > 0.0) {
+    const Vec3 up = -g / g_len;
+    for (std::size_t i = 0; i < owned_count(); ++i)
+      e += p_.mass[i] * g_len * (dot(p_.position[i], up) - reference_height);
+  }
+  if (frame_) {
+    const Vec3 level{frame_->axis_point.x, frame_->axis_point.y, reference_height};
+    e += frame_potential_energy(p_, owned_count(), *frame_, time_, norm(frame_->radius_vector(level)));
+  }
   return global_sum(e);
 }
 

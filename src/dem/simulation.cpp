@@ -63,6 +63,17 @@ void Simulation::set_gravity(std::function<Vec3(double)> g) {
 
 Vec3 Simulation::gravity() const { return gravity_is_constant_ ? constant_gravity_ : gravity_(time_); }
 
+void Simulation::set_rotating_frame(RotatingFrame frame) {
+  const double length = norm(frame.axis);
+  if (!(length > 0.0) || !std::isfinite(length))
+    throw InputError("rotating frame: the axis direction must be a non-zero finite vector");
+  if (!frame.spin) throw InputError("rotating frame: no angular velocity given (spin)");
+  frame.axis = frame.axis / length;
+  frame_ = std::make_unique<RotatingFrame>(std::move(frame));
+}
+
+void Simulation::clear_rotating_frame() { frame_.reset(); }
+
 std::size_t Simulation::add_wall(Wall wall) {
   const std::string where = "wall '" + wall.name + "'";
   wall.law.validate(where);
@@ -152,7 +163,8 @@ void Simulation::step() {
   }
   integrate_positions();
   update_neighbours_if_needed();
-  contacts(true);  // with the second half kick
+  contacts(!frame_);  // with the second half kick, unless it is the frame's (after the sweep)
+  if (frame_) bad_particle_ = kick_owned() ? first_non_finite_particle() : -1;
   ++stats_.steps;
   check_stability();
 }
@@ -217,6 +229,7 @@ void Simulation::integrate_positions() {
   // Particles added since the last build have no reference position: the lists are invalid then
   // and will be rebuilt anyway.
   const bool track = lists_valid_ && position_at_build_.size() == p_.size();
+  if (frame_) frame_first_half_kick(p_, owned_count(), FrameKick(*frame_, time_, 0.5 * dt_), 0.5 * dt_);
   const DriftReport drift = first_half_kick_and_drift(p_, owned_count(), track ? position_at_build_.data() : nullptr, gravity(), dt_,
                                                       settings_.domain, !settings_.freeze_rotation);
   max_displacement2_ = drift.max_displacement2;

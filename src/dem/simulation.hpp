@@ -13,6 +13,7 @@
 #include "dem/pair_histories.hpp"
 #include "dem/pair_list.hpp"
 #include "dem/particles.hpp"
+#include "dem/rotating_frame.hpp"
 #include "dem/wall.hpp"
 #include "dem/wall_list.hpp"
 
@@ -55,6 +56,14 @@ class Simulation {
   void set_gravity(const Vec3& g);
   void set_gravity(std::function<Vec3(double)> g);
   Vec3 gravity() const;  // at the current time
+
+  // A frame turning about a fixed axis (rotating_frame.hpp): centrifugal, Euler and Coriolis
+  // forces on each particle at its own position, on top of the uniform gravity. None by default:
+  // then the step is the uniform-gravity step, unchanged. The frame is not checkpointed: its owner
+  // sets it again on a resume, as it does the gravity.
+  void set_rotating_frame(RotatingFrame frame);
+  void clear_rotating_frame();
+  const RotatingFrame* rotating_frame() const { return frame_.get(); }
 
   // A wall's contact law is fixed when it is added (the engine keeps it in the form its loops
   // read); its motion is changed through the calls below, never by reference.
@@ -130,7 +139,10 @@ class Simulation {
   double translational_kinetic_energy() const;  // J
   double rotational_kinetic_energy() const;     // J
   double kinetic_energy() const { return translational_kinetic_energy() + rotational_kinetic_energy(); }
-  double potential_energy(double reference_height = 0.0) const;  // J, -m g . x relative to the reference
+  // J, -m g . x relative to the reference; in a rotating frame plus the frame's potential
+  // m omega^2 (r_h^2 - r^2) / 2, r_h the radius of the point at z = reference_height on the
+  // line through the axis point along z (the height above the base when z is the model's vertical).
+  double potential_energy(double reference_height = 0.0) const;
   std::size_t contact_count() const;            // touching particle pairs
   double max_overlap_fraction() const { return max_overlap_seen_; }
 
@@ -168,6 +180,7 @@ class Simulation {
   std::function<Vec3(double)> gravity_;
   Vec3 constant_gravity_;
   bool gravity_is_constant_ = true;
+  std::unique_ptr<RotatingFrame> frame_;  // null: uniform gravity only
 
   PairList pairs_;
   WallList wall_list_;
