@@ -14,15 +14,23 @@ blaze=(--set contact.tangential_model=blaze_tresca --set contact.rolling_model=a
        --set contact.damping_model=restitution_blaze)
 calibrated=(--set contact.kinetic_friction=0.18 --set contact.rolling_friction=0.001)
 rf3=(--set contact.kinetic_friction=0.5 --set contact.rolling_friction=0.4)
-run() {  # name, then options
-  local name=$1; shift
-  [ -f "$out/$name/element.json" ] && return 0
-  "$trapdem" element "${common[@]}" "$@" --out "$out/$name" > "$out/$name.log" 2>&1 || echo "$name failed (see $name.log)"
+run() {  # name, confining stress (Pa), then options: one folder a stress, so a failure at one keeps the others
+  local name=$1 confining=$2; shift 2
+  local folder="$out/$name-$confining"
+  [ -f "$folder/element.json" ] && return 0
+  rm -rf "$folder"
+  "$trapdem" element "${common[@]}" "$@" --confining "$confining" --out "$folder" > "$folder.log" 2>&1 ||
+    echo "$name at $confining Pa failed (see $folder.log)"
 }
-run blaze-calibrated-dtref2e-9 "${blaze[@]}" "${calibrated[@]}" --set contact.reference_time_step=2e-9 --confining 10e3,50e3,200e3
-run ours-calibrated "${calibrated[@]}" --confining 10e3,50e3,200e3
-run blaze-calibrated-dtref2e-7 "${blaze[@]}" "${calibrated[@]}" --set contact.reference_time_step=2e-7 --confining 10e3,50e3,200e3
-run blaze-rf3-dtref2e-9 "${blaze[@]}" "${rf3[@]}" --set contact.reference_time_step=2e-9 --confining 50e3
-run ours-rf3 "${rf3[@]}" --confining 50e3
-run blaze-calibrated-dtref2e-8 "${blaze[@]}" "${calibrated[@]}" --set contact.reference_time_step=2e-8 --confining 50e3
-run blaze-calibrated-dtref2e-6 "${blaze[@]}" "${calibrated[@]}" --set contact.reference_time_step=2e-6 --confining 50e3
+for p in 10000 50000 200000; do
+  run blaze-calibrated-dtref2e-9 $p "${blaze[@]}" "${calibrated[@]}" --set contact.reference_time_step=2e-9
+  run ours-calibrated $p "${calibrated[@]}"
+done
+run blaze-rf3-dtref2e-9 50000 "${blaze[@]}" "${rf3[@]}" --set contact.reference_time_step=2e-9
+run ours-rf3 50000 "${rf3[@]}"
+for dt in 2e-8 2e-7 2e-6; do
+  run blaze-calibrated-dtref$dt 50000 "${blaze[@]}" "${calibrated[@]}" --set contact.reference_time_step=$dt
+done
+for p in 10000 200000; do
+  run blaze-calibrated-dtref2e-7 $p "${blaze[@]}" "${calibrated[@]}" --set contact.reference_time_step=2e-7
+done
