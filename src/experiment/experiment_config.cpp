@@ -9,6 +9,7 @@
 #include <fmt/format.h>
 
 #include "core/thread_count.hpp"
+#include "experiment/centrifuge_frame.hpp"
 #include "experiment/packing_input.hpp"
 #include "io/config.hpp"
 
@@ -38,6 +39,8 @@ constexpr double kMaxWallClock = 1e7;          // s (116 days) between checkpoin
 constexpr double kMaxSteps = 1e11;             // time steps of one stage: years of computing
 constexpr double kMaxRows = 1e7;               // trapdoor.csv rows
 constexpr std::size_t kMaxSnapshots = 10'000;  // output.snapshot_displacements entries
+constexpr double kMaxCentrifugeRadius = 20.0;  // m: the largest geotechnical centrifuges have arms of about 10 m
+constexpr double kMaxSpinRate = 150.0;         // rad/s (1430 rpm): the fastest (mini drums, ~0.4 m) turn at ~1100 rpm
 
 // A contact law's keys, with defaults taken from `base` (the particle law for the walls). The
 // normal model's own keys: normal_stiffness and tangential_stiffness for "linear"; for "hertz",
@@ -195,6 +198,87 @@ void load_packing(Config& c, ExperimentConfig& e) {
                                                     critical));
 }
 
+// m, the height of the deposit pluviation.count particles make at pluviation.packing_fraction.
+double count_deposit_height(const ExperimentConfig& e) {
+  const double d = e.material.sizes.mean_diameter();
+  return double(e.pluviation.count) * std::numbers::pi / 6.0 * d * d * d /
+         (e.pluviation.packing_fraction * e.box.width * e.box.depth);
+}
+
+// [centrifuge]: read only when the table is there, so that a run in uniform gravity records no
+// centrifuge key (and its resume identity is what it was). The model's height is the fill height,
+// else the deposit of the count; a packing's top replaces it once the packing is read.
+void read_centrifuge(Config& c, ExperimentConfig& e) {
+  if (!c.has("centrifuge")) return;
+  Config t = c.get_table("centrifuge");
+  CentrifugeConfig& f = e.centrifuge;
+  f.enabled = true;
+  f.radius = t.require_double("radius", "m", Range::open_closed(0.0, kMaxCentrifugeRadius));
+  f.reference = t.get_choice("reference", f.reference, {"base", "surface", "effective"});
+  f.width_in_plane = t.get_choice("width_orientation", "in_plane", {"in_plane", "normal"}) == "in_plane";
+  f.coriolis = t.get_bool("coriolis", f.coriolis);
+  f.euler = t.get_bool("euler", f.euler);
+  f.model_height = e.pluviation.fill_height > 0.0 ? e.pluviation.fill_height
+                   : e.pluviation.count > 0       ? count_deposit_height(e)
+                                                  : e.box.height;
+}
+
+// The frame must fit the model and be a centrifuge's: the axis above the box, a spin rate a
+// centrifuge reaches, and a spin-up whose Euler force does not rival the weight.
+void check_centrifuge(Config& c, const ExperimentConfig& e) {
+  const CentrifugeConfig& f = e.centrifuge;
+  if (!f.enabled || !(f.radius > 0.0)) return;
+  if (!(f.radius > f.model_height))
+    return c.fail("centrifuge.radius",
+                  fmt::format("a radius larger than the model's height ({:.4g} m): the axis would be inside the model",
+                              f.model_height));
+  const double axis_height = f.reference_height() + f.radius;
+  if (!(axis_height > e.box.height))
+    return c.fail("centrifuge.radius",
+                  fmt::format("a radius that puts the axis above the box's top ({:.4g} m): with reference = \"{}\" "
+                              "at {:.4g} m above the base the axis is {:.4g} m above it",
+                              e.box.height, f.reference, f.reference_height(), axis_height));
+  const double w1 = centrifuge_angular_velocity(1.0, f.radius);
+  const double wn = centrifuge_angular_velocity(e.spin_up.g_level, f.radius);
+  if (wn > kMaxSpinRate)
+    return c.fail("spin_up.g_level",
+                  fmt::format("a g level a centrifuge of radius {} m reaches: {:g} g there needs {:.4g} rad/s ({:.0f} "
+                              "rpm), above {:g} rad/s (the fastest geotechnical centrifuges turn at ~1100 rpm)",
+                              f.radius, e.spin_up.g_level, wn, wn * 60.0 / (2.0 * std::numbers::pi), kMaxSpinRate));
+  if (f.euler) {
+    // alpha r at the reference radius at most 1 g: the weight the spin-up starts from.
+    const double min_ramp = (wn - w1) * f.radius / ExperimentConfig::standard_gravity;
+    if (e.spin_up.ramp_time < min_ramp)
+      c.fail("spin_up.ramp_time",
+             fmt::format("a ramp of at least {:.4g} s with centrifuge.euler = true: the spin-up's Euler acceleration "
+                         "alpha r at the reference radius must stay below 1 g (a real spin-up takes minutes and "
+                         "gives ~0.01 g); or centrifuge.euler = false for a quasi-static spin-up",
+                         min_ramp));
+  }
+}
+
+// What resolved.toml records of the frame beyond its keys.
+void add_centrifuge_derived(Config& c, const ExperimentConfig& e) {
+  const CentrifugeConfig& f = e.centrifuge;
+  if (!f.enabled) return;
+  const double g = ExperimentConfig::standard_gravity;
+  const double w = centrifuge_angular_velocity(e.spin_up.g_level, f.radius);
+  const double r_surface = centrifuge_radius_at(f, f.model_height), r_base = centrifuge_radius_at(f, 0.0);
+  c.add_derived("derived.centrifuge_model_height", f.model_height, "m");
+  c.add_derived("derived.centrifuge_reference_height", f.reference_height(), "m");
+  c.add_derived("derived.centrifuge_angular_velocity", w, "rad/s");
+  c.add_derived("derived.centrifuge_radius_surface", r_surface, "m");
+  c.add_derived("derived.centrifuge_radius_base", r_base, "m");
+  c.add_derived("derived.centrifuge_g_level_surface", w * w * r_surface / g, "g");
+  c.add_derived("derived.centrifuge_g_level_base", w * w * r_base / g, "g");
+  const double half_span = 0.5 * (f.width_in_plane ? e.box.width : e.box.depth);
+  c.add_derived("derived.centrifuge_side_tilt", std::atan2(half_span, r_base) * 180.0 / std::numbers::pi, "degrees");
+  if (f.euler && e.spin_up.ramp_time > 0.0) {
+    const double alpha = (w - centrifuge_angular_velocity(1.0, f.radius)) / e.spin_up.ramp_time;
+    c.add_derived("derived.centrifuge_euler_acceleration", alpha * f.radius, "m/s^2");
+  }
+}
+
 double read_g_level(Config& spin, const SpinUpConfig& defaults) {
   return spin.get_double("g_level", defaults.g_level, "g", Range::closed(1.0, kMaxGLevel));
 }
@@ -303,9 +387,7 @@ ExperimentConfig ExperimentConfig::from(Config& c) {
   e.pluviation.seed = static_cast<std::uint64_t>(pour.get_int("seed", 1, Range::non_negative()));
   if (e.pluviation.count > 0) {
     // The deposit's height at the assumed solid fraction must fit in the box.
-    const double d = e.material.sizes.mean_diameter();
-    const double height = double(e.pluviation.count) * std::numbers::pi / 6.0 * d * d * d /
-                          (e.pluviation.packing_fraction * e.box.width * e.box.depth);
+    const double height = count_deposit_height(e);
     if (height > e.box.height)
       pour.fail("count", fmt::format("a count whose deposit fits the box: {} particles at a solid fraction of "
                                             "{} stand {:.1f} mm high, the box is {:.1f} mm",
@@ -323,6 +405,7 @@ ExperimentConfig ExperimentConfig::from(Config& c) {
   Config spin = c.get_table("spin_up");
   e.spin_up.g_level = read_g_level(spin, e.spin_up);
   e.spin_up.ramp_time = spin.get_double("ramp_time", e.spin_up.ramp_time, "s", Range::closed(0.0, kMaxTime));
+  read_centrifuge(c, e);
 
   Config num = c.get_table("numerics");
   e.numerics.time_step = num.get_double("time_step", 0.0, "s", Range::non_negative());
@@ -356,11 +439,21 @@ ExperimentConfig ExperimentConfig::from(Config& c) {
                                       critical_time_step_formula(e.material.particle, e.material.wall_laws()),
                                       e.critical_time_step()));
   if (!c.has_errors()) check_step_counts(c, e);
+  if (!c.has_errors() && !e.packing.enabled()) check_centrifuge(c, e);
   c.throw_errors();  // unknown keys, wrong values, broken rules: all of them, in that order
   if (e.packing.enabled()) {
     load_packing(c, e);
     c.add_derived("derived.packing_particle_count", std::int64_t(e.packing.particles->size()));
+    if (e.centrifuge.enabled) {  // the model is the packing: its top
+      const Particles& p = *e.packing.particles;
+      double top = 0.0;
+      for (std::size_t i = 0; i < p.size(); ++i) top = std::max(top, p.position[i].z + p.radius[i]);
+      e.centrifuge.model_height = top;
+      check_centrifuge(c, e);
+      c.throw_errors();
+    }
   }
+  add_centrifuge_derived(c, e);
   c.add_derived("derived.critical_time_step", e.critical_time_step(), "s");
   c.add_derived("derived.time_step", e.time_step(), "s");
   c.add_derived("derived.skin", e.skin(), "m");
@@ -377,6 +470,12 @@ ExperimentConfig ExperimentConfig::specimen_from(Config& c) {
   Config spin = c.get_table("spin_up");
   e.spin_up.g_level = read_g_level(spin, e.spin_up);
   return e;
+}
+
+double CentrifugeConfig::reference_height() const {
+  if (reference == "base") return 0.0;
+  if (reference == "surface") return model_height;
+  return model_height * (2.0 / 3.0);  // the effective radius (Taylor 1995): a third of the depth below the surface
 }
 
 std::vector<const ContactLaw*> MaterialConfig::wall_laws() const { return {&base, &front, &back}; }

@@ -75,6 +75,21 @@ struct SpinUpConfig {
   double ramp_time = 0.05;     // s, linear ramp from 1 g
 };
 
+// [centrifuge]: the model in the rotating frame of a centrifuge (centrifuge_frame.hpp) from the
+// spin-up on, instead of a uniform gravity. Off unless the table is there (then spin_up.g_level is
+// the g level at the reference level).
+struct CentrifugeConfig {
+  bool enabled = false;
+  double radius = 0.0;                 // m, from the axis to the reference level
+  std::string reference = "effective"; // "base", "surface" or "effective" (a third of the model's height below the surface)
+  bool width_in_plane = true;          // the box's width (x) in the plane of rotation; else along the axis
+  bool coriolis = true;
+  bool euler = true;
+  double model_height = 0.0;           // m, the soil model's height above the base (derived)
+
+  double reference_height() const;     // m, z of the reference level above the base
+};
+
 struct NumericsConfig {
   double time_step = 0.0;            // s (0: time_step_fraction of the critical step)
   double time_step_fraction = 0.2;   // of the critical step
@@ -100,6 +115,7 @@ struct ExperimentConfig {
   PackingConfig packing;
   SettlingConfig settling;
   SpinUpConfig spin_up;
+  CentrifugeConfig centrifuge;
   NumericsConfig numerics;
   OutputConfig output;
 

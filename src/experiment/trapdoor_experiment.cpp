@@ -8,6 +8,7 @@
 #include <fmt/format.h>
 
 #include "core/errors.hpp"
+#include "experiment/centrifuge_frame.hpp"
 #include "experiment/strongbox.hpp"
 
 namespace trapdem {
@@ -82,6 +83,26 @@ double TrapdoorExperiment::trapdoor_displacement() const { return -sim_->walls()
 
 void TrapdoorExperiment::install_gravity() {
   const double g1 = ExperimentConfig::standard_gravity;
+  if (config_.centrifuge.enabled) {
+    // The pour and the settling at 1 g on the laboratory floor; from the spin-up on, the
+    // centrifuge's rotating frame (centrifuge_frame.hpp) replaces the uniform gravity.
+    const bool flying = stage_ != Stage::pluviation && stage_ != Stage::settling;
+    sim_->set_gravity(flying ? Vec3{} : Vec3{0, 0, -g1});
+    if (flying)
+      sim_->set_rotating_frame(centrifuge_frame(config_, stage_start_time_, stage_ == Stage::spin_up));
+    else
+      sim_->clear_rotating_frame();
+  } else {
+    install_uniform_gravity();
+  }
+  if (stage_ == Stage::lowering)
+    sim_->set_wall_velocity(trapdoor_wall_, Vec3{0, 0, -config_.trapdoor.rate});
+  else
+    sim_->set_wall_velocity(trapdoor_wall_, nullptr);
+}
+
+void TrapdoorExperiment::install_uniform_gravity() {
+  const double g1 = ExperimentConfig::standard_gravity;
   const double gn = config_.spin_up.g_level * g1;
   switch (stage_) {
     case Stage::pluviation:
@@ -98,10 +119,14 @@ void TrapdoorExperiment::install_gravity() {
     case Stage::lowering:
     case Stage::done: sim_->set_gravity(Vec3{0, 0, -gn}); break;
   }
-  if (stage_ == Stage::lowering)
-    sim_->set_wall_velocity(trapdoor_wall_, Vec3{0, 0, -config_.trapdoor.rate});
-  else
-    sim_->set_wall_velocity(trapdoor_wall_, nullptr);
+}
+
+double TrapdoorExperiment::g_level_now() const {
+  if (const RotatingFrame* frame = sim_->rotating_frame()) {  // at the reference level
+    const double w = frame->spin(sim_->time()).omega;
+    return w * w * config_.centrifuge.radius / ExperimentConfig::standard_gravity;
+  }
+  return -sim_->gravity().z / ExperimentConfig::standard_gravity;
 }
 
 void TrapdoorExperiment::start_stage(Stage stage) {
@@ -300,7 +325,7 @@ void TrapdoorExperiment::report(ExperimentObserver& observer, bool force) {
       break;
     case Stage::spin_up: {
       const double ramp = config_.spin_up.ramp_time;
-      const double g = -sim_->gravity().z / ExperimentConfig::standard_gravity;
+      const double g = g_level_now();
       p.fraction = spin_up_ramp_done_ ? 0.5 + 0.5 * energy_fraction() : (ramp > 0.0 ? 0.5 * std::min(1.0, t / ramp) : 0.5);
       p.detail = fmt::format("gravity {:.1f} g, kinetic/potential energy {:.2e}", g, last_energy_ratio_);
       break;

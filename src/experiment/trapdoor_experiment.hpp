@@ -69,7 +69,11 @@ class TrapdoorExperiment {
   bool advance(ExperimentObserver& observer);   // one step and the stage logic; false when done
   bool settled(double& energy_ratio) const;
   void begin_lowering(ExperimentObserver& observer);
+  // The body force of the stage: uniform gravity, or from the spin-up on the centrifuge's
+  // rotating frame when [centrifuge] is on; and the trapdoor's motion.
   void install_gravity();
+  void install_uniform_gravity();  // 1 g, the linear ramp to N g, N g (the frame off)
+  double g_level_now() const;      // g, at the reference level in the frame
   BaseLoad wall_load(std::size_t wall, double area, double reference_stress) const;
   void report(ExperimentObserver& observer, bool force);
 
