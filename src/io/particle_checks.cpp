@@ -26,7 +26,7 @@ void check_particle_rows(const std::string& where, const std::vector<std::int64_
   std::unordered_set<std::int64_t> seen;
   seen.reserve(id.size());
   for (std::size_t k = 0; k < id.size(); ++k) {
-    if (id[k] <= 0) damaged(where, k, id[k], "expected a positive particle id");
+    if (id[k] < 0) damaged(where, k, id[k], "expected a particle id >= 0");
     if (distinct_ids && !seen.insert(id[k]).second) damaged(where, k, id[k], "the id appears twice: expected each particle once");
     if (!is_finite(position[k])) damaged(where, k, id[k], fmt::format("position {} m: expected finite numbers", text(position[k])));
     if (!(radius[k] > 0.0) || !std::isfinite(radius[k]))

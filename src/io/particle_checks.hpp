@@ -17,7 +17,7 @@ namespace trapdem {
 inline constexpr double kMaxReadSpeed = 1.0e4;
 
 // The particle rows read from `where` (a file and group, as Hdf5Group::describe gives it): ids
-// positive and (with `distinct_ids`: not for a rank's checkpoint, whose ghosts may repeat an owned
+// non-negative and (with `distinct_ids`: not for a rank's checkpoint, whose ghosts may repeat an owned
 // particle's id as its periodic image) distinct, positions and radii finite, radii positive, velocities (if given, else
 // empty) finite and below kMaxReadSpeed, angular velocities (same) finite with |w| r below it.
 // Throws FileError naming `where`, the row, the particle id, the value and what was expected.
