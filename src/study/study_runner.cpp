@@ -138,7 +138,8 @@ void claim_study_folder(const StudyDefinition& study, const StudyScale& scale, c
   Json j = Json::object();
   j.set("study", study.name);
   j.set("scale", scale.name);
-  j.set("study_file", study.source.empty() ? "" : fs::absolute(study.source).string());
+  // Relative to the study folder, so that a published copy names no machine's absolute path.
+  j.set("study_file", study.source.empty() ? "" : fs::relative(fs::absolute(study.source), fs::absolute(out)).generic_string());
   Json cases = Json::array();
   for (const StudyCase& c : study.cases) cases.push_back(c.name);
   j.set("cases", cases);

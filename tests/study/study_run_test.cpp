@@ -207,6 +207,15 @@ TEST_F(StudyRun, ReportHasEveryFigureAndMeasuredNumbers) {
   EXPECT_EQ(page.find("http"), std::string::npos) << "the page must work offline";
 }
 
+// study.json names the study file relative to the study folder (a published copy names no
+// machine's absolute path), and that path leads to the file from there.
+TEST_F(StudyRun, StudyJsonNamesTheStudyFileRelativeToTheFolder) {
+  const Json j = Json::parse(read_text_file(out() / "study.json"), "study.json");
+  const std::string file = j["study_file"].as_string();
+  EXPECT_FALSE(fs::path(file).is_absolute()) << file;
+  EXPECT_TRUE(fs::exists(out() / file)) << file;
+}
+
 TEST_F(StudyRun, PageOpensInHeadlessChromiumWithoutMissingImagesOrConsoleErrors) {
   ASSERT_TRUE(chromium_installed()) << "chromium (Debian package) is needed: scripts/install-deps installs it";
   const fs::path page = out() / "report" / "index.html";
