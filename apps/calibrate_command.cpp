@@ -5,6 +5,7 @@
 #include <fmt/format.h>
 
 #include "core/errors.hpp"
+#include "core/exit_codes.hpp"
 #include "plot/figure_format.hpp"
 #include "study/slurm_script.hpp"
 #include "study/slurm_submission.hpp"
@@ -72,7 +73,7 @@ int run_calibrate(const CalibrateCommand& command) {
   const Calibration c = calibrate(o);
   if (!c.complete) {
     fmt::print("calibration interrupted (checkpoint written); run the same command again to carry on\n");
-    return 130;
+    return kExitInterrupted;
   }
   fmt::print("calibration against {} at {}: {} cases, ranked by RMS(w_DEM - w_PIV)/δ\n", o.target, o.at,
              c.ranked.size());

@@ -1,16 +1,21 @@
 // trapdem: the command line. Each subcommand is one stage of the work, from packing to figures.
+#include <algorithm>
 #include <charconv>
 #include <cmath>
 #include <exception>
 #include <string>
+#include <vector>
 
 #include <CLI/CLI.hpp>
 #include <fmt/format.h>
+#include <fmt/ranges.h>
 
 #include "analyze_command.hpp"
 #include "calibrate_command.hpp"
 #include "compare_command.hpp"
 #include "core/errors.hpp"
+#include "core/exit_codes.hpp"
+#include "core/nearest_name.hpp"
 #include "core/thread_count.hpp"
 #include "deposit_command.hpp"
 #include "element_command.hpp"
@@ -255,7 +260,25 @@ int main(int argc, char** argv) {
   auto* dep = app.add_subcommand("deposit", "The fill's deposit: solid fraction, coordination, surface, before the trapdoor moves");
   dep->add_option("dir", deposit.dir, "Run folder (snapshots.h5, resolved.toml)")->required()->check(CLI::ExistingDirectory);
 
-  CLI11_PARSE(app, argc, argv);
+  // An unknown command is refused naming it and the nearest known one, with --help or without (CLI11
+  // said "A subcommand is required", or printed the main help and exited 0 for `NOSUCH --help`).
+  if (argc > 1 && argv[1][0] != '-') {
+    std::vector<std::string> commands;
+    for (const CLI::App* command : app.get_subcommands([](const CLI::App*) { return true; }))
+      commands.push_back(command->get_name());
+    if (std::find(commands.begin(), commands.end(), argv[1]) == commands.end()) {
+      const std::string close = trapdem::nearest_name(argv[1], commands);
+      fmt::print(stderr, "trapdem: unknown command '{}'{}; the commands: {} (trapdem --help)\n", argv[1],
+                 close.empty() ? "" : fmt::format(" (did you mean '{}'?)", close), fmt::join(commands, ", "));
+      return trapdem::kExitInputError;
+    }
+  }
+  // A command-line error is an input error (exit 2, as a configuration's); --help exits 0.
+  try {
+    app.parse(argc, argv);
+  } catch (const CLI::ParseError& e) {
+    return app.exit(e) == 0 ? 0 : trapdem::kExitInputError;
+  }
   try {
     if (run_cmd->parsed()) return trapdem::app::run_experiment(run);
     if (presets_cmd->parsed()) return trapdem::app::list_presets();
@@ -273,16 +296,16 @@ int main(int argc, char** argv) {
     if (dep->parsed()) return trapdem::app::run_deposit(deposit);
   } catch (const trapdem::InputError& e) {
     fmt::print(stderr, "trapdem: input error: {}\n", e.what());
-    return 2;
+    return trapdem::kExitInputError;
   } catch (const trapdem::SimulationError& e) {
     fmt::print(stderr, "trapdem: run stopped: {}\n", e.what());
-    return 3;
+    return trapdem::kExitRunStopped;
   } catch (const trapdem::FileError& e) {
     fmt::print(stderr, "trapdem: file error: {}\n", e.what());
-    return 4;
+    return trapdem::kExitFileError;
   } catch (const std::exception& e) {
     fmt::print(stderr, "trapdem: error: {}\n", e.what());
-    return 1;
+    return trapdem::kExitUnexpected;
   }
   return 0;
 }

@@ -6,6 +6,7 @@
 #include <fmt/format.h>
 
 #include "core/errors.hpp"
+#include "core/exit_codes.hpp"
 #include "experiment/folder_run.hpp"
 #include "experiment/presets.hpp"
 #include "installed_presets.hpp"
@@ -67,7 +68,7 @@ int run_experiment(const RunOptions& o) {
                                  launched_ranks()));
 #endif
   }
-  return run_in_folder(run) ? 0 : 130;
+  return run_in_folder(run) ? kExitDone : kExitInterrupted;
 }
 
 }  // namespace trapdem::app

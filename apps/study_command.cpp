@@ -5,6 +5,7 @@
 #include <fmt/format.h>
 
 #include "core/errors.hpp"
+#include "core/exit_codes.hpp"
 #include "core/json.hpp"
 #include "io/text_file.hpp"
 #include "plot/figure_format.hpp"
@@ -91,7 +92,7 @@ int run_study(const StudyOptions& o) {
                                           to_string(r.state)), false);
     }
   } else if (!run_study_in_folder(study, scale, out, StudyRunSettings{preset_directory(), o.threads, o.quiet})) {
-    return 130;
+    return kExitInterrupted;
   }
   const fs::path page = write_study_outputs(study, scale, out, o.quiet, preset_directory(), format);
   log_study_line(out, fmt::format("report: {}", page.string()), o.quiet);

@@ -7,21 +7,11 @@
 #include <fmt/format.h>
 
 #include "core/errors.hpp"
+#include "core/exit_codes.hpp"
 #include "parallel/failure_agreement.hpp"
 #include "parallel/mpi_run_ranks.hpp"
 
 namespace trapdem {
-
-namespace {
-
-int exit_code_of(const std::exception& e) {
-  if (dynamic_cast<const InputError*>(&e)) return 2;
-  if (dynamic_cast<const SimulationError*>(&e)) return 3;
-  if (dynamic_cast<const FileError*>(&e)) return 4;
-  return 1;
-}
-
-}  // namespace
 
 int run_in_folder_on_ranks(FolderRunOptions options) {
   int initialised = 0;
@@ -39,7 +29,7 @@ int run_in_folder_on_ranks(FolderRunOptions options) {
   MpiRunRanks ranks(MPI_COMM_WORLD);
   options.ranks = &ranks;
   try {
-    return run_in_folder(options) ? 0 : 130;
+    return run_in_folder(options) ? kExitDone : kExitInterrupted;
   } catch (const std::exception& e) {
     if (!failure_was_agreed()) {
       fmt::print(stderr, "trapdem: rank {} of {} stops every rank: {}\n", ranks.rank(), ranks.ranks(), e.what());
