@@ -1,6 +1,9 @@
 #!/usr/bin/env bash
 # A one-node Slurm cluster for the tests (issue 16): munged, slurmctld and slurmd on this host with
-# a generated minimal slurm.conf, everything (key, socket, state, spool, logs) in one folder.
+# a generated minimal slurm.conf, its configuration, key, state and logs in one folder, its sockets
+# (munged's, slurmd's spool where each job step gets one) in a short private folder of their own
+# (mktemp -d /tmp/tdslurm.XXXXXX, named in DIR/runtime and removed by stop): a Unix socket's path
+# is limited to 108 bytes, and DIR lies under the checkout, which may be anywhere.
 #
 #   tests/slurm/cluster.sh start DIR   # starts it, waits until sinfo shows the node idle
 #   tests/slurm/cluster.sh stop DIR    # cancels its jobs, stops the three daemons
@@ -56,7 +59,13 @@ stop_cluster() {
   fi
   stop_daemon "$dir/slurmd.pid"
   stop_daemon "$dir/slurmctld.pid"
-  stop_daemon "$dir/munge/munged.pid"
+  if [ -f "$dir/runtime" ]; then
+    local runtime
+    runtime=$(cat "$dir/runtime")
+    stop_daemon "$runtime/munged.pid"
+    case "$runtime" in /tmp/tdslurm.*) rm -rf "$runtime" ;; esac
+    rm -f "$dir/runtime"
+  fi
 }
 
 case "$action" in
@@ -77,8 +86,18 @@ mkdir -p "$dir"
 dir=$(cd "$dir" && pwd)
 stop_cluster  # a cluster left by an earlier run in the same folder
 rm -rf "$dir/state" "$dir/spool" "$dir/log" "$dir/jobcomp.txt"
-mkdir -p "$dir/munge" "$dir/state" "$dir/spool" "$dir/log"
+mkdir -p "$dir/munge" "$dir/state" "$dir/log"
 chmod 700 "$dir/munge"
+runtime=$(mktemp -d /tmp/tdslurm.XXXXXX) || fail "cannot make a folder for the cluster's sockets under /tmp"
+echo "$runtime" > "$dir/runtime"
+mkdir -p "$runtime/spool"
+chmod 700 "$runtime"
+# The longest socket path: slurmd's step socket, spool/<node>_<job>.<step> with 10-digit numbers.
+longest="$runtime/spool/${host}_4294967295.4294967295"
+if [ ${#longest} -ge 108 ]; then
+  rm -rf "$runtime"; rm -f "$dir/runtime"
+  fail "a Unix socket path would be ${#longest} bytes (limit 108): $longest (the host name '$host' is too long)"
+fi
 
 # munge: a key of our own (made once), its socket in the folder.
 key="$dir/munge/munge.key"
@@ -90,8 +109,8 @@ if [ ! -s "$key" ]; then
   fi
 fi
 chmod 600 "$key"
-socket="$dir/munge/munge.socket"
-munged --force --socket="$socket" --key-file="$key" --pid-file="$dir/munge/munged.pid" \
+socket="$runtime/munge.socket"
+munged --force --socket="$socket" --key-file="$key" --pid-file="$runtime/munged.pid" \
   --log-file="$dir/log/munged.log" --seed-file="$dir/munge/munged.seed" \
   || fail "munged did not start"
 for _ in $(seq 1 20); do [ -S "$socket" ] && break; sleep 0.25; done
@@ -114,7 +133,7 @@ AuthType=auth/munge
 CredType=cred/munge
 AuthInfo=socket=$socket
 StateSaveLocation=$dir/state
-SlurmdSpoolDir=$dir/spool
+SlurmdSpoolDir=$runtime/spool
 SlurmctldPidFile=$dir/slurmctld.pid
 SlurmdPidFile=$dir/slurmd.pid
 SlurmctldLogFile=$dir/log/slurmctld.log
@@ -152,4 +171,12 @@ for _ in $(seq 1 120); do
   sleep 0.5
 done
 [ "$state" = "idle" ] || { stop_cluster; fail "the node did not become idle within 60 s (sinfo says '${state:-nothing}')"; }
+# A node can be idle and still unable to launch a job (a step socket it cannot create, a credential it
+# refuses): one short job step now, so that the tests are not the first to wait for it.
+if ! timeout 60 srun -N1 -n1 -t 1 true > "$dir/log/first-step.txt" 2>&1; then
+  reason=$(timeout 10 sinfo -h -n "$host" -o '%t %E' 2>/dev/null || true)
+  cat "$dir/log/first-step.txt" >&2
+  stop_cluster
+  fail "the node is up but could not run a one-step job within 60 s (sinfo: '${reason:-nothing}')"
+fi
 echo "cluster.sh: one-node cluster up: SLURM_CONF=$SLURM_CONF (node $host, 2 CPUs, partition debug)"
