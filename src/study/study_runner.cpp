@@ -106,7 +106,7 @@ std::vector<CaseRun> case_runs(const StudyDefinition& study, const StudyCase& c,
   const ConfigRecipe recipe = case_recipe(c, scale);
   const ReplicateRequest& request = case_replicates(study, c, scale);
   std::uint64_t case_seed = 0;
-  resolved_recipe(recipe, presets, c.name, &case_seed);
+  const std::string own_seed_resolved = resolved_recipe(recipe, presets, c.name, &case_seed);
   std::vector<CaseRun> runs;
   for (std::uint64_t seed : replicate_seeds(request, case_seed)) {
     CaseRun run;
@@ -117,6 +117,9 @@ std::vector<CaseRun> case_runs(const StudyDefinition& study, const StudyCase& c,
     if (run.replicate) {
       run.dir /= replicate_folder_name(seed);
       run.recipe.overrides.push_back(fmt::format("pluviation.seed={}", seed));
+      run.resolved = resolved_recipe(run.recipe, presets, c.name, nullptr);
+    } else {
+      run.resolved = own_seed_resolved;
     }
     runs.push_back(std::move(run));
   }
@@ -156,10 +159,9 @@ std::vector<std::vector<CaseRun>> checked_study_runs(const StudyDefinition& stud
   for (const StudyCase& c : study.cases) {
     runs.push_back(case_runs(study, c, scale, out, preset_directory));
     for (const CaseRun& r : runs.back()) {
-      const std::string resolved = resolved_recipe(r.recipe, preset_directory, c.name, nullptr);
       const RunFolder run(r.dir);
       if (!run.has_checkpoint() && !run_finished(run)) continue;
-      const std::string change = configuration_change(run, resolved);
+      const std::string change = configuration_change(run, r.resolved);
       if (!change.empty())
         throw InputError(fmt::format("{}: holds a run of another configuration than case '{}' now has ({}); remove "
                                      "the folder to run the case again, or choose another --out",

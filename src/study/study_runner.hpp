@@ -33,9 +33,11 @@ struct CaseRun {
   bool replicate = false;
   std::filesystem::path dir;
   ConfigRecipe recipe;                 // case_recipe, then pluviation.seed for a replicate
+  std::string resolved;                // the recipe's resolved configuration (TOML), read and checked once
 };
-// The case's runs in seed order (the configuration is resolved for the case's own seed). Throws
-// InputError naming the case if its configuration does not validate.
+// The case's runs in seed order, each with its configuration resolved once (the case's own seed's
+// serves a case without replicates). Throws InputError naming the case if its configuration does
+// not validate.
 std::vector<CaseRun> case_runs(const StudyDefinition& study, const StudyCase& study_case, const StudyScale& scale,
                                const std::filesystem::path& out, const std::filesystem::path& preset_directory);
 
