@@ -1,16 +1,20 @@
 // trapdem: the command line. Each subcommand is one stage of the work, from packing to figures.
 #include <charconv>
 #include <cmath>
+#include <algorithm>
 #include <exception>
 #include <string>
+#include <vector>
 
 #include <CLI/CLI.hpp>
 #include <fmt/format.h>
+#include <fmt/ranges.h>
 
 #include "analyze_command.hpp"
 #include "calibrate_command.hpp"
 #include "compare_command.hpp"
 #include "core/errors.hpp"
+#include "core/nearest_name.hpp"
 #include "core/thread_count.hpp"
 #include "deposit_command.hpp"
 #include "element_command.hpp"
@@ -39,6 +43,25 @@ void add_submit_options(CLI::App& command, trapdem::app::SubmitOptions& o) {
                      "With --submit: another sbatch option for both jobs, e.g. --sbatch-arg=--account=geo (repeatable)")
       ->needs(submit)
       ->allow_extra_args(false);
+}
+
+// The first word that is not an option must name a command: `trapdem NOSUCH` (with or without
+// --help) is refused with the word and the nearest command, not CLI11's "A subcommand is required"
+// (or the main help and exit 0, which let a script with a typo succeed). "" when it does.
+std::string unknown_command_message(const CLI::App& app, int argc, char** argv) {
+  for (int i = 1; i < argc; ++i) {
+    const std::string word = argv[i];
+    if (word.empty() || word[0] == '-') continue;  // the only options before a command are --help's
+    std::vector<std::string> commands;
+    for (const CLI::App* command : app.get_subcommands([](const CLI::App*) { return true; }))
+      commands.push_back(command->get_name());
+    if (std::find(commands.begin(), commands.end(), word) != commands.end()) return "";
+    std::string message = fmt::format("trapdem: input error: '{}' is not a trapdem command", word);
+    const std::string nearest = trapdem::nearest_name(word, commands);
+    if (!nearest.empty()) return message + fmt::format(" (did you mean {}?)", nearest);
+    return message + fmt::format(" (the commands: {})", fmt::join(commands, ", "));
+  }
+  return "";
 }
 
 }  // namespace
@@ -255,7 +278,18 @@ int main(int argc, char** argv) {
   auto* dep = app.add_subcommand("deposit", "The fill's deposit: solid fraction, coordination, surface, before the trapdoor moves");
   dep->add_option("dir", deposit.dir, "Run folder (snapshots.h5, resolved.toml)")->required()->check(CLI::ExistingDirectory);
 
-  CLI11_PARSE(app, argc, argv);
+  if (const std::string refused = unknown_command_message(app, argc, argv); !refused.empty()) {
+    fmt::print(stderr, "{}\n", refused);
+    return 2;
+  }
+  try {
+    app.parse(argc, argv);
+  } catch (const CLI::ParseError& e) {
+    // --help and --version exit 0; every command-line error is an input error, exit 2 as a bad
+    // configuration is (README, Exit codes), not CLI11's own codes (105, 106, 109, ...).
+    const int cli11_code = app.exit(e);
+    return cli11_code == 0 ? 0 : 2;
+  }
   try {
     if (run_cmd->parsed()) return trapdem::app::run_experiment(run);
     if (presets_cmd->parsed()) return trapdem::app::list_presets();

@@ -14,6 +14,7 @@
 #include <fmt/format.h>
 #include <toml++/toml.h>
 
+#include "core/nearest_name.hpp"
 #include "core/text_escape.hpp"
 #include "io/text.hpp"
 
@@ -116,21 +117,6 @@ std::string expectation(std::string_view what, std::string_view unit, const Rang
   if (!bounds.empty()) out += " " + bounds;
   if (!unit.empty()) out += fmt::format(" ({})", unit);
   return out;
-}
-
-std::size_t edit_distance(std::string_view a, std::string_view b) {
-  std::vector<std::size_t> row(b.size() + 1);
-  for (std::size_t j = 0; j <= b.size(); ++j) row[j] = j;
-  for (std::size_t i = 1; i <= a.size(); ++i) {
-    std::size_t diagonal = row[0];
-    row[0] = i;
-    for (std::size_t j = 1; j <= b.size(); ++j) {
-      const std::size_t above = row[j];
-      row[j] = std::min({row[j] + 1, row[j - 1] + 1, diagonal + (a[i - 1] == b[j - 1] ? 0 : 1)});
-      diagonal = above;
-    }
-  }
-  return row[b.size()];
 }
 
 // Inserts `value` at the dotted `key` of `root`, creating tables on the way.
@@ -784,19 +770,14 @@ std::string suggestion(const Config::State& s, const std::string& unknown) {
   const std::size_t dot = unknown.rfind('.');
   const std::string parent = dot == std::string::npos ? "" : unknown.substr(0, dot + 1);
   const std::string leaf = unknown.substr(parent.size());
-  std::string best;
-  std::size_t best_distance = std::max<std::size_t>(2, leaf.size() / 3) + 1;
+  std::vector<std::string> siblings;  // the known keys beside it, by their last part
   for (const std::string& known : s.used) {
     if (known.compare(0, parent.size(), parent) != 0) continue;
     const std::string known_leaf = known.substr(parent.size());
-    if (known_leaf.find('.') != std::string::npos) continue;
-    const std::size_t d = edit_distance(leaf, known_leaf);
-    if (d < best_distance) {
-      best_distance = d;
-      best = known;
-    }
+    if (known_leaf.find('.') == std::string::npos) siblings.push_back(known_leaf);
   }
-  return best;
+  const std::string best = nearest_name(leaf, siblings);
+  return best.empty() ? "" : parent + best;
 }
 
 }  // namespace

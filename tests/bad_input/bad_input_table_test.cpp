@@ -1,8 +1,9 @@
 // Issue 14, "always on": a table of bad inputs to every command of the `trapdem` binary, each row the
 // arguments (and the text of an input file, if the row needs one), the exit code expected and a
-// fragment of the message. The binary maps InputError to 2, FileError to 4 (apps/main.cpp), and
-// CLI11's own refusals to its codes (105 a value its check refuses, 106 a missing required option,
-// 109 an argument it does not know). Every row runs as a separate process in a folder of its own.
+// fragment of the message. The exit codes are README.md's "Exit codes" (apps/main.cpp): InputError
+// and every command-line refusal (CLI11's own codes 105, 106, 109 mapped, issue 41) exit 2,
+// FileError 4; the ExitCode rows walk that table. Every row runs as a separate process in a folder
+// of its own.
 //
 // Placeholders in the arguments: {IN} the row's input file (its text is the row's `input`), {TINY}
 // the tiny preset, {RUN} a tiny run stopped after 300 steps (checkpoint.h5, resolved.toml, run.log),
@@ -45,8 +46,21 @@ std::ostream& operator<<(std::ostream& os, const BadInput& b) { return os << b.n
 
 const std::vector<BadInput>& table() {
   static const std::vector<BadInput> rows = {
+      // ---- README.md's exit codes, one row per code a bad input gives cheaply (issue 41); 3 (the
+      // physics guard) and 130 (interrupted) are tested where a run stops (tests/experiment, tests/study)
+      {"ExitCode0Help", "--help", nullptr, 0, "Usage:"},
+      {"ExitCode0CommandHelp", "analyze --help", nullptr, 0, "Usage:"},
+      {"ExitCode2UnknownCommand", "NOSUCH", nullptr, 2, "'NOSUCH' is not a trapdem command (the commands: run,"},
+      {"ExitCode2UnknownCommandHelp", "NOSUCH --help", nullptr, 2, "'NOSUCH' is not a trapdem command"},
+      {"ExitCode2MisspeltCommand", "anlyze {RUN}", nullptr, 2, "'anlyze' is not a trapdem command (did you mean analyze?)"},
+      {"ExitCode2NoCommand", "", nullptr, 2, "A subcommand is required"},
+      {"ExitCode2BadOptionValue", "run {TINY} --threads abc", nullptr, 2, "--threads 'abc'"},
+      {"ExitCode2UnknownOption", "run {TINY} --colour red", nullptr, 2, "--colour"},
+      {"ExitCode2MissingOption", "compare {RUN} {EMPTY}", nullptr, 2, "--at is required"},
+      {"ExitCode2BadConfigKey", "run {IN}", "[trapdoor]\nrat = 0.1\n", 2, "unknown key trapdoor.rat"},
+      {"ExitCode4MissingInputFile", "analyze {EMPTY} --dumps {DUMP0} {NOWHERE}/x.dump --displacements 0mm,1mm --config {GEOM} --no-figures", nullptr, 4, "x.dump"},
       // ---- run: files, syntax, keys
-      {"RunMissingFile", "run {NOWHERE}/x.toml", nullptr, 105, "File does not exist"},
+      {"RunMissingFile", "run {NOWHERE}/x.toml", nullptr, 2, "File does not exist"},
       {"RunSyntaxError", "run {IN}", "x = [1, 2\n", 2, "TOML syntax error"},
       {"RunTypoAndMissingPourTogether", "run {IN}", "[box]\nwidht = 0.3\n", 2, "unknown key box.widht (did you mean box.width?)"},
       {"RunTypoBeforeRule", "run {IN}", "[box]\nwidht = 0.3\n", 2, "a particle count or a fill_height"},
@@ -92,9 +106,9 @@ const std::vector<BadInput>& table() {
       {"RunPackingNanShift", "run {TINY} --set packing.from={DUMP0} --set packing.format=lammps-dump --set packing.shift=[0.0,nan,0.0]", nullptr, 2, "packing.shift[1] = nan"},
       {"RunPackingStartStage", "run {TINY} --set packing.from={DUMP0} --set packing.format=lammps-dump --set packing.start_stage=lowering", nullptr, 2, "packing.start_stage = \"lowering\""},
       // ---- run: command line
-      {"RunThreadsText", "run {TINY} --threads abc", nullptr, 105, "--threads 'abc': expected 0 (all cores) or a thread count up to 4096"},
-      {"RunThreadsHuge", "run {TINY} --threads 100000", nullptr, 105, "--threads '100000': expected 0 (all cores) or a thread count up to 4096"},
-      {"RunThreadsOverflow", "run {TINY} --threads 99999999999999999999", nullptr, 105, "expected 0 (all cores) or a thread count up to 4096"},
+      {"RunThreadsText", "run {TINY} --threads abc", nullptr, 2, "--threads 'abc': expected 0 (all cores) or a thread count up to 4096"},
+      {"RunThreadsHuge", "run {TINY} --threads 100000", nullptr, 2, "--threads '100000': expected 0 (all cores) or a thread count up to 4096"},
+      {"RunThreadsOverflow", "run {TINY} --threads 99999999999999999999", nullptr, 2, "expected 0 (all cores) or a thread count up to 4096"},
       {"RunThreadsInConfig", "run {TINY} --set numerics.threads=100000", nullptr, 2, "numerics.threads = 100000 (an integer): expected an integer in [0, 4096]"},
       {"RunSetWithoutEquals", "run {TINY} --set trapdoor.rate", nullptr, 2, "--set trapdoor.rate: expected key.path=value"},
       {"RunSetBadKey", "run {TINY} --set 'trap door.rate=1'", nullptr, 2, "is not a key path"},
@@ -102,9 +116,9 @@ const std::vector<BadInput>& table() {
       {"RunUnknownPreset", "run --preset nosuch", nullptr, 2, "nosuch"},
       {"RunConfigAndPreset", "run {TINY} --preset tiny", nullptr, 2, "give either a configuration file or --preset, not both"},
       {"RunOccupiedFolder", "run {TINY} --out {RUN}", nullptr, 2, "already holds a run: resume it with --resume"},
-      {"RunUnknownOption", "run {TINY} --colour red", nullptr, 109, "--colour"},
+      {"RunUnknownOption", "run {TINY} --colour red", nullptr, 2, "--colour"},
       // ---- run: resume
-      {"ResumeMissingFolder", "run --resume {NOWHERE}", nullptr, 105, "Directory does not exist"},
+      {"ResumeMissingFolder", "run --resume {NOWHERE}", nullptr, 2, "Directory does not exist"},
       {"ResumeNotARunFolder", "run --resume {EMPTY}", nullptr, 2, "neither checkpoint.h5 nor resolved.toml there: not a run folder"},
       {"ResumeWithSet", "run --resume {RUN} --set trapdoor.rate=0.2", nullptr, 2, "to change trapdoor.rate on purpose add --allow-change trapdoor.rate"},
       {"ResumeWithConfig", "run {TINY} --resume {RUN}", nullptr, 2, "give no configuration file or --preset with it"},
@@ -118,30 +132,30 @@ const std::vector<BadInput>& table() {
       {"AnalyzeGridText", "analyze {EMPTY} --dumps {DUMP0} {DUMP1} --displacements 0mm,1mm --config {GEOM} --no-figures --quiet --grid abc", nullptr, 2, "'abc'"},
       {"AnalyzeNanInDump", "analyze {EMPTY} --dumps {DUMP0} {DUMPNAN} --displacements 0mm,1mm --config {GEOM} --no-figures --quiet", nullptr, 2, "coordinate: 'nan' is not a finite number"},
       {"AnalyzeDumpMissingFile", "analyze {EMPTY} --dumps {DUMP0} {NOWHERE}/x.dump --displacements 0mm,1mm --config {GEOM} --no-figures", nullptr, 4, "x.dump"},
-      {"AnalyzeSmoothingText", "analyze {RUN} --smoothing abc", nullptr, 105, "--smoothing: 'abc': expected a number >= 0 and <= 100 mean diameters"},
-      {"AnalyzeSmoothingInf", "analyze {RUN} --smoothing inf", nullptr, 105, "expected a number >= 0 and <= 100"},
-      {"AnalyzeBadView", "analyze {RUN} --view sideways", nullptr, 105, "sideways"},
+      {"AnalyzeSmoothingText", "analyze {RUN} --smoothing abc", nullptr, 2, "--smoothing: 'abc': expected a number >= 0 and <= 100 mean diameters"},
+      {"AnalyzeSmoothingInf", "analyze {RUN} --smoothing inf", nullptr, 2, "expected a number >= 0 and <= 100"},
+      {"AnalyzeBadView", "analyze {RUN} --view sideways", nullptr, 2, "sideways"},
       {"AnalyzeRunWithoutSnapshots", "analyze {RUN}", nullptr, 2, "snapshots.h5"},
       // ---- compare
-      {"CompareMissingAt", "compare {RUN} {EMPTY}", nullptr, 106, "--at is required"},
+      {"CompareMissingAt", "compare {RUN} {EMPTY}", nullptr, 2, "--at is required"},
       {"CompareRunWithoutSnapshots", "compare {RUN} {EMPTY} --at 10mm", nullptr, 2, "snapshots.h5: not found (run `trapdem run` first)"},
       {"CompareNoDemFolder", "compare {NOWHERE} {EMPTY} --at 10mm", nullptr, 2, "nowhere"},
       {"CompareBadAtBeforeAnyFile", "compare {NOWHERE} {NOWHERE} --at 10pc", nullptr, 2, "--at '10pc'"},
       {"CompareBadGridBeforeAnyFile", "compare {NOWHERE} {NOWHERE} --at 10mm --grid 0", nullptr, 2, "--grid must be positive"},
-      {"CompareUnknownOption", "compare {RUN} {EMPTY} --at 10mm --colour red", nullptr, 109, "--colour"},
+      {"CompareUnknownOption", "compare {RUN} {EMPTY} --at 10mm --colour red", nullptr, 2, "--colour"},
       // ---- piv and synth
       {"PivOneImage", "piv {IMG1} --out {EMPTY}/p", nullptr, 2, "give at least two images"},
       {"PivEmptyRoi", "piv {IMG1} {IMG2} --out {EMPTY}/p --roi 40,10,40,70 --quiet --no-figures", nullptr, 2, "--roi"},
       {"PivMissingImage", "piv {IMG1} {NOWHERE}/b.png --out {EMPTY}/p --quiet", nullptr, 2, "b.png': no such file"},
       {"PivNotAnImage", "piv {IMG1} {IN} --out {EMPTY}/p --quiet", "not an image\n", 2, "in.txt': not an image format OpenCV can read"},
-      {"PivThreadsHuge", "piv {IMG1} {IMG2} --out {EMPTY}/p --threads 100000", nullptr, 105, "expected 0 (all cores) or a thread count up to 4096"},
+      {"PivThreadsHuge", "piv {IMG1} {IMG2} --out {EMPTY}/p --threads 100000", nullptr, 2, "expected 0 (all cores) or a thread count up to 4096"},
       {"SynthHugeImage", "synth --out {EMPTY}/s --size 200000x200000", nullptr, 2, "needs 3.2e+11 bytes of working memory; expected at most 1 GiB"},
       {"SynthNanNoise", "synth --out {EMPTY}/s --size 64x64 --noise nan", nullptr, 2, "noise nan grey levels: expected a finite number >= 0"},
       {"SynthBadSize", "synth --out {EMPTY}/s --size abc", nullptr, 2, "--size 'abc': expected WIDTHxHEIGHT"},
       {"SynthOneImage", "synth --out {EMPTY}/s --images 1", nullptr, 2, "at least 2"},
       {"SynthNanMagnitude", "synth --out {EMPTY}/s --size 64x64 --magnitude nan", nullptr, 2, "not finite"},
       // ---- render: the image size from --px-per-mm
-      {"RenderHugeScale", "render {SNAPRUN} --config {GEOM} --px-per-mm 1e9 --out {EMPTY}/r", nullptr, 105, "'1e9': expected a number > 0 and <= 1000 px per mm"},
+      {"RenderHugeScale", "render {SNAPRUN} --config {GEOM} --px-per-mm 1e9 --out {EMPTY}/r", nullptr, 2, "'1e9': expected a number > 0 and <= 1000 px per mm"},
       {"RenderViewTooLarge", "render {SNAPRUN} --config {GEOM} --px-per-mm 1000 --out {EMPTY}/r", nullptr, 2, "--px-per-mm 1000: the view of 80 x"},
       {"RenderNoSnapshots", "render {RUN}", nullptr, 2, "snapshots.h5: not found (run `trapdem run` first)"},
       // ---- sinkhole
@@ -155,7 +169,7 @@ const std::vector<BadInput>& table() {
       {"SinkholeNoLayer", "sinkhole --throat 2", nullptr, 2, "layer"},
       {"SinkholeFromNowhere", "sinkhole --from {NOWHERE} --layer :30", nullptr, 2, "nowhere: not a folder"},
       // ---- study
-      {"StudyMissingFile", "study {NOWHERE}/s.toml", nullptr, 105, "File does not exist"},
+      {"StudyMissingFile", "study {NOWHERE}/s.toml", nullptr, 2, "File does not exist"},
       {"StudySyntaxError", "study {IN}", "name = \n", 2, "TOML syntax error"},
       {"StudyDeepNesting", "study {IN}", "DEEP", 2, "nested 100 levels deep: expected at most 64"},
       {"StudyNoScales", "study {IN} --out {EMPTY}/st", "name = \"s\"\n", 2, "scales: expected a table of scales"},
@@ -167,19 +181,19 @@ const std::vector<BadInput>& table() {
        "[scales.s]\npreset = \"tiny\"\n[cases.a]\nseeds = [9007199254740993]\n", 2, "in [0, 9007199254740991]"},
       {"StudyStrainScaleTooHigh", "study {IN} --out {EMPTY}/st",
        "[scales.s]\npreset = \"tiny\"\n[cases.a]\nlabel = \"A\"\n[report]\nmax_strain = 1e9\n", 2, "report.max_strain"},
-      {"StudyThreadsText", "study {IN} --threads abc", "name = \"s\"\n", 105, "expected 0 (all cores) or a thread count up to 4096"},
+      {"StudyThreadsText", "study {IN} --threads abc", "name = \"s\"\n", 2, "expected 0 (all cores) or a thread count up to 4096"},
       // ---- calibrate
-      {"CalibrateMissingVary", "calibrate {TINY} --target {EMPTY} --at 10mm", nullptr, 106, "--vary is required"},
+      {"CalibrateMissingVary", "calibrate {TINY} --target {EMPTY} --at 10mm", nullptr, 2, "--vary is required"},
       {"CalibrateNoTarget", "calibrate {TINY} --vary trapdoor.rate=0.1,0.2 --target {EMPTY} --at 10mm --out {EMPTY}/c", nullptr, 2, "piv.h5"},
       {"CalibrateBadVary", "calibrate {TINY} --vary trapdoor.rate --target {EMPTY} --at 10mm --out {EMPTY}/c", nullptr, 2, "trapdoor.rate"},
-      {"CalibrateThreadsHuge", "calibrate {TINY} --vary trapdoor.rate=0.1 --target {EMPTY} --at 10mm --threads 100000", nullptr, 105, "expected 0 (all cores) or a thread count up to 4096"},
+      {"CalibrateThreadsHuge", "calibrate {TINY} --vary trapdoor.rate=0.1 --target {EMPTY} --at 10mm --threads 100000", nullptr, 2, "expected 0 (all cores) or a thread count up to 4096"},
       // ---- element
       {"ElementTooFewParticles", "element --preset tiny --set element.particles=10 --out {EMPTY}/e", nullptr, 2, "element.particles = 10 (an integer): expected an integer in [50, 1000000]"},
       {"ElementHugeSpecimen", "element --preset tiny --set element.particles=1000000000 --out {EMPTY}/e", nullptr, 2, "expected an integer in [50, 1000000]"},
       {"ElementHugeConfining", "element --preset tiny --confining 1e300 --out {EMPTY}/e", nullptr, 2, "element.confining[0] = 1e+300 (a float): expected a number in (0, 1000000000] (Pa)"},
       {"ElementInfInertialNumber", "element --preset tiny --set element.inertial_number=inf --out {EMPTY}/e", nullptr, 2, "element.inertial_number = inf (a float): expected a finite number"},
-      {"ElementBadTest", "element --preset tiny --test shear", nullptr, 105, "shear"},
-      {"ElementThreadsText", "element --preset tiny --threads abc", nullptr, 105, "expected 0 (all cores) or a thread count up to 4096"},
+      {"ElementBadTest", "element --preset tiny --test shear", nullptr, 2, "shear"},
+      {"ElementThreadsText", "element --preset tiny --threads abc", nullptr, 2, "expected 0 (all cores) or a thread count up to 4096"},
       {"ElementDeepNesting", "element {IN}", "DEEP", 2, "nested 100 levels deep: expected at most 64"},
       {"ElementNoParticles", "element {IN} --out {EMPTY}/e", "[box]\nwidth = 0.3\n", 2, "no [particles] table"},
       {"ElementTypoInRunKeys", "element {IN} --out {EMPTY}/e", "[particles]\ndiameter = 0.002\n[contact]\nrestitution = 0.5\nstatic_frction = 0.3\n", 2, "unknown key contact.static_frction"},
