@@ -29,6 +29,7 @@
 #include "study/cluster_process.hpp"
 #include "../study/tiny_study.hpp"
 #include "study_command.hpp"
+#include "../io/io_test_support.hpp"
 
 namespace fs = std::filesystem;
 using namespace trapdem;
@@ -40,8 +41,10 @@ const std::string kScale = test::tiny_scale("the tiny preset, a shallow pour and
 const std::string kStudy = "name = \"slurm-pair\"\n" + kScale + test::three_mm_of_travel + "[report]\ncontours_at = 0.002\n" +
                            test::smooth_and_rough_cases;
 
+// In a folder of this process's own, removed at its exit (a failed test's too).
 fs::path scratch(const std::string& name) {
-  const fs::path dir = fs::temp_directory_path() / ("trapdem-slurm-" + name + "-" + std::to_string(::getpid()));
+  static const io_testing::ScratchDir root("trapdem-slurm");
+  const fs::path dir = root / name;
   fs::remove_all(dir);
   fs::create_directories(dir);
   return dir;
