@@ -11,6 +11,7 @@
 #include <fmt/format.h>
 
 #include "core/errors.hpp"
+#include "core/nearest_name.hpp"
 #include "core/thread_count.hpp"
 #include "experiment/run_folder.hpp"
 #include "experiment/run_identity.hpp"
@@ -99,6 +100,20 @@ void check_resume_options(const FolderRunOptions& o) {
                                    "change {} on purpose add --allow-change {} (the change is logged in run.log and "
                                    "recorded in resolved.toml)",
                                    assignment, override_key(assignment), override_key(assignment)));
+}
+
+// Each --allow-change names a key of the run's configuration: a misspelt one would otherwise let
+// nothing through and say nothing (issue 41).
+void check_allowed_changes_are_keys(const FolderRunOptions& o, const std::string& configuration) {
+  if (o.allowed_changes.empty()) return;
+  std::vector<std::string> keys;
+  for (const auto& [key, value] : value_leaves(configuration, "resolved.toml")) keys.push_back(key);
+  for (const std::string& key : o.allowed_changes) {
+    if (std::find(keys.begin(), keys.end(), key) != keys.end()) continue;
+    const std::string nearest = nearest_name(key, keys);
+    throw InputError(fmt::format("--allow-change {}: not a key of this run's configuration{}", key,
+                                 nearest.empty() ? " (resolved.toml lists them)" : fmt::format(" (did you mean {}?)", nearest)));
+  }
 }
 
 // A resume's configuration against the one its checkpoint was taken with: a change of a key not
@@ -201,6 +216,7 @@ bool run_logged(const FolderRunOptions& o, std::optional<RunLog>& log) {
     config.apply_overrides(o.overrides);
     read = ExperimentConfig::from(config);
     configuration = resolved_values(config);
+    check_allowed_changes_are_keys(o, configuration);
   });
   const ExperimentConfig& experiment_config = *read;
   const int threads = o.threads > 0 ? o.threads : experiment_config.numerics.threads;

@@ -97,6 +97,17 @@ TEST(ResumeIdentity, AChangedConfigurationIsRefusedUnlessAllowed) {
   EXPECT_NE(m.find("--allow-change trapdoor.rate"), std::string::npos) << m;
   EXPECT_EQ(read_checkpoint(run / "checkpoint.h5").stats.steps, 300);  // nothing ran
 
+  // A misspelt --allow-change key is refused, naming it and the key meant (issue 41).
+  FolderRunOptions misspelt = resume(run, 400);
+  misspelt.allowed_changes = {"trapdoor.rat"};
+  m = refusal(misspelt);
+  EXPECT_NE(m.find("--allow-change trapdoor.rat: not a key of this run's configuration (did you mean trapdoor.rate?)"),
+            std::string::npos) << m;
+  misspelt.allowed_changes = {"nosuch.key"};
+  m = refusal(misspelt);
+  EXPECT_NE(m.find("--allow-change nosuch.key: not a key of this run's configuration"), std::string::npos) << m;
+  EXPECT_EQ(read_checkpoint(run / "checkpoint.h5").stats.steps, 300);  // nothing ran
+
   // Allowed: it runs, and the change is in run.log, resolved.toml and the next checkpoint.
   FolderRunOptions allowed = resume(run, 400);
   allowed.allowed_changes = {"trapdoor.rate"};
