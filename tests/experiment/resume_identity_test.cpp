@@ -224,12 +224,32 @@ TEST(ResumeIdentity, AFolderWithoutACheckpointRestartsFromTheBeginning) {
   ScratchDir dir;
   const fs::path run = dir / "run";
   ASSERT_FALSE(run_in_folder(fresh(run, 300)));
-  fs::remove(run / "checkpoint.h5");  // killed while writing its first checkpoint
+  // Killed while writing its first checkpoint: no checkpoint.h5, and run.log without the note that
+  // RunRecorder writes once one is complete.
+  fs::remove(run / "checkpoint.h5");
+  std::string log_text = read_all(run / "run.log");
+  ASSERT_NE(log_text.find("\ncheckpoint at t = "), std::string::npos) << log_text;
+  log_text.erase(log_text.find("\ncheckpoint at t = ") + 1);
+  std::ofstream(run / "run.log", std::ios::trunc) << log_text;
   std::ofstream(run / ".checkpoint.h5.tmp-1-1") << "partial";
   // --resume is the one command for such a folder (a fresh run into it would mix two logs).
   EXPECT_FALSE(run_in_folder(resume(run, 300)));
   EXPECT_EQ(read_checkpoint(run / "checkpoint.h5").stats.steps, 300);
-  EXPECT_NE(read_all(run / "run.log").find("starting it again from the beginning"), std::string::npos);
+  EXPECT_NE(read_all(run / "run.log").find("the run stopped before its first checkpoint was complete): starting it again "
+                                           "from the beginning"),
+            std::string::npos);
+
+  // checkpoint.h5 deleted after checkpoints were complete (run.log records them): said so, not
+  // "stopped before its first checkpoint", and on stderr under --quiet too (issue 41).
+  fs::remove(run / "checkpoint.h5");
+  ::testing::internal::CaptureStderr();
+  EXPECT_FALSE(run_in_folder(resume(run, 300)));  // resume() is quiet
+  const std::string said = ::testing::internal::GetCapturedStderr();
+  const std::string truth = "checkpoint.h5 is missing from " + run.string() +
+                            ", although run.log records 1 completed checkpoint (the last at step 300): it was "
+                            "deleted or moved; starting the run again from the beginning";
+  EXPECT_NE(said.find(truth), std::string::npos) << said;
+  EXPECT_NE(read_all(run / "run.log").find(truth), std::string::npos);
   // A folder with neither is no run folder.
   fs::create_directories(dir / "empty");
   EXPECT_NE(refusal(resume(dir / "empty")).find("not a run folder"), std::string::npos);
