@@ -105,6 +105,25 @@ void check_resume_options(const FolderRunOptions& o) {
                                    assignment, override_key(assignment), override_key(assignment)));
 }
 
+// The temporaries of writes a kill interrupted: io/atomic_file.cpp writes FILE through
+// ".FILE.tmp-PID-N" beside it (checkpoint.h5, snapshots.h5, snapshots/NNNNNN.h5) and renames it;
+// a kill before the rename leaves it (a snapshot's is ~26 MB at paper scale). Called with the
+// folder's lock held, so no other process is writing one. Returns how many were removed.
+int remove_interrupted_writes(const RunFolder& folder) {
+  int removed = 0;
+  for (const fs::path& dir : {folder.path(), folder.path() / "snapshots"}) {
+    std::error_code ec;
+    if (!fs::is_directory(dir, ec)) continue;
+    for (const fs::directory_entry& e : fs::directory_iterator(dir, ec)) {
+      const std::string name = e.path().filename().string();
+      if (name.size() > 1 && name[0] == '.' && name.find(".tmp-") != std::string::npos && e.is_regular_file(ec) &&
+          fs::remove(e.path(), ec))
+        ++removed;
+    }
+  }
+  return removed;
+}
+
 // The checkpoints a run.log records as complete (RunRecorder notes "checkpoint at t = ... (step N,
 // stage ...)" once checkpoint.h5 is written): told apart from a run killed before its first one.
 struct CheckpointsLogged {
@@ -227,6 +246,9 @@ bool run_logged(const FolderRunOptions& o, std::optional<RunLog>& log) {
         if (restart) lost_checkpoints = checkpoints_logged(folder.run_log());
         log.emplace(folder.run_log(), o.quiet);
         log->say(fmt::format("trapdem run --resume {}", out.string()));
+        if (const int removed = remove_interrupted_writes(folder); removed > 0)
+          log->say(fmt::format("removed {} temporary file{} of a write the stop interrupted", removed,
+                               removed == 1 ? "" : "s"));
       }
       loaded = Config::load_file(folder.resolved_toml().string());
     } else {

@@ -232,8 +232,17 @@ TEST(ResumeIdentity, AFolderWithoutACheckpointRestartsFromTheBeginning) {
   log_text.erase(log_text.find("\ncheckpoint at t = ") + 1);
   std::ofstream(run / "run.log", std::ios::trunc) << log_text;
   std::ofstream(run / ".checkpoint.h5.tmp-1-1") << "partial";
+  std::ofstream(run / ".snapshots.h5.tmp-1-2") << "partial";
+  fs::create_directories(run / "snapshots");
+  std::ofstream(run / "snapshots" / ".000003.h5.tmp-1-3") << "partial";
   // --resume is the one command for such a folder (a fresh run into it would mix two logs).
   EXPECT_FALSE(run_in_folder(resume(run, 300)));
+  // The interrupted writes' temporaries are gone (issue 41), and run.log says so.
+  EXPECT_FALSE(fs::exists(run / ".checkpoint.h5.tmp-1-1"));
+  EXPECT_FALSE(fs::exists(run / ".snapshots.h5.tmp-1-2"));
+  EXPECT_FALSE(fs::exists(run / "snapshots" / ".000003.h5.tmp-1-3"));
+  EXPECT_NE(read_all(run / "run.log").find("removed 3 temporary files of a write the stop interrupted"),
+            std::string::npos);
   EXPECT_EQ(read_checkpoint(run / "checkpoint.h5").stats.steps, 300);
   EXPECT_NE(read_all(run / "run.log").find("the run stopped before its first checkpoint was complete): starting it again "
                                            "from the beginning"),
