@@ -1,7 +1,7 @@
 // trapdem: the command line. Each subcommand is one stage of the work, from packing to figures.
+#include <algorithm>
 #include <charconv>
 #include <cmath>
-#include <algorithm>
 #include <exception>
 #include <string>
 #include <vector>
@@ -285,7 +285,7 @@ int main(int argc, char** argv) {
   try {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& e) {
-    // --help and --version exit 0; every command-line error is an input error, exit 2 as a bad
+    // --help exits 0; every command-line error is an input error, exit 2 as a bad
     // configuration is (README, Exit codes), not CLI11's own codes (105, 106, 109, ...).
     const int cli11_code = app.exit(e);
     return cli11_code == 0 ? 0 : 2;
