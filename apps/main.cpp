@@ -46,6 +46,25 @@ void add_submit_options(CLI::App& command, trapdem::app::SubmitOptions& o) {
       ->allow_extra_args(false);
 }
 
+// The first word that is not an option must name a command: `trapdem NOSUCH` (with or without
+// --help) is refused with the word and the nearest command, not CLI11's "A subcommand is required"
+// (or the main help and exit 0, which let a script with a typo succeed). "" when it does.
+std::string unknown_command_message(const CLI::App& app, int argc, char** argv) {
+  for (int i = 1; i < argc; ++i) {
+    const std::string word = argv[i];
+    if (word.empty() || word[0] == '-') continue;  // the only options before a command are --help's
+    std::vector<std::string> commands;
+    for (const CLI::App* command : app.get_subcommands([](const CLI::App*) { return true; }))
+      commands.push_back(command->get_name());
+    if (std::find(commands.begin(), commands.end(), word) != commands.end()) return "";
+    std::string message = fmt::format("trapdem: input error: '{}' is not a trapdem command", word);
+    const std::string nearest = trapdem::nearest_name(word, commands);
+    if (!nearest.empty()) return message + fmt::format(" (did you mean {}?)", nearest);
+    return message + fmt::format(" (the commands: {})", fmt::join(commands, ", "));
+  }
+  return "";
+}
+
 }  // namespace
 
 int main(int argc, char** argv) {
@@ -260,24 +279,17 @@ int main(int argc, char** argv) {
   auto* dep = app.add_subcommand("deposit", "The fill's deposit: solid fraction, coordination, surface, before the trapdoor moves");
   dep->add_option("dir", deposit.dir, "Run folder (snapshots.h5, resolved.toml)")->required()->check(CLI::ExistingDirectory);
 
-  // An unknown command is refused naming it and the nearest known one, with --help or without (CLI11
-  // said "A subcommand is required", or printed the main help and exited 0 for `NOSUCH --help`).
-  if (argc > 1 && argv[1][0] != '-') {
-    std::vector<std::string> commands;
-    for (const CLI::App* command : app.get_subcommands([](const CLI::App*) { return true; }))
-      commands.push_back(command->get_name());
-    if (std::find(commands.begin(), commands.end(), argv[1]) == commands.end()) {
-      const std::string close = trapdem::nearest_name(argv[1], commands);
-      fmt::print(stderr, "trapdem: unknown command '{}'{}; the commands: {} (trapdem --help)\n", argv[1],
-                 close.empty() ? "" : fmt::format(" (did you mean '{}'?)", close), fmt::join(commands, ", "));
-      return trapdem::kExitInputError;
-    }
+  if (const std::string refused = unknown_command_message(app, argc, argv); !refused.empty()) {
+    fmt::print(stderr, "{}\n", refused);
+    return trapdem::kExitInputError;
   }
-  // A command-line error is an input error (exit 2, as a configuration's); --help exits 0.
   try {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& e) {
-    return app.exit(e) == 0 ? 0 : trapdem::kExitInputError;
+    // --help exits 0; every command-line error is an input error, exit 2 as a bad
+    // configuration is (README, Exit codes), not CLI11's own codes (105, 106, 109, ...).
+    const int cli11_code = app.exit(e);
+    return cli11_code == 0 ? 0 : trapdem::kExitInputError;
   }
   try {
     if (run_cmd->parsed()) return trapdem::app::run_experiment(run);

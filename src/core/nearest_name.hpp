@@ -1,6 +1,6 @@
 #pragma once
-// The known name closest to a mistyped one (Levenshtein distance): "did you mean ...?" for
-// configuration keys (io/config.cpp) and command names (apps/main.cpp).
+// The known name nearest a mistyped one, for "did you mean ...?" in the messages that refuse an
+// unknown configuration key or command.
 #include <cstddef>
 #include <string>
 #include <string_view>
@@ -8,11 +8,12 @@
 
 namespace trapdem {
 
-// Insertions, deletions and substitutions that turn `a` into `b`.
+// Levenshtein distance: the fewest single-character insertions, deletions and substitutions
+// that turn a into b.
 std::size_t edit_distance(std::string_view a, std::string_view b);
 
-// The candidate closest to `name` if it is within a typo's reach (at most max(2, |name| / 3)
-// edits), else "".
-std::string nearest_name(std::string_view name, const std::vector<std::string>& candidates);
+// The candidate nearest `typed` by edit distance, if that distance is a typo's (at most
+// max(2, typed.size() / 3)); "" when none is that close. Ties go to the first candidate.
+std::string nearest_name(std::string_view typed, const std::vector<std::string>& candidates);
 
 }  // namespace trapdem

@@ -6,11 +6,15 @@
 #include <atomic>
 #include <map>
 #include <csignal>
+#include <cstdlib>
+#include <fstream>
+#include <string>
 #include <optional>
 
 #include <fmt/format.h>
 
 #include "core/errors.hpp"
+#include "core/nearest_name.hpp"
 #include "core/thread_count.hpp"
 #include "experiment/run_folder.hpp"
 #include "experiment/run_identity.hpp"
@@ -101,6 +105,59 @@ void check_resume_options(const FolderRunOptions& o) {
                                    assignment, override_key(assignment), override_key(assignment)));
 }
 
+// The temporaries of writes a kill interrupted: io/atomic_file.cpp writes FILE through
+// ".FILE.tmp-PID-N" beside it (checkpoint.h5, snapshots.h5, snapshots/NNNNNN.h5) and renames it;
+// a kill before the rename leaves it (a snapshot's is ~26 MB at paper scale). Called with the
+// folder's lock held, so no other process is writing one. Returns how many were removed.
+int remove_interrupted_writes(const RunFolder& folder) {
+  int removed = 0;
+  for (const fs::path& dir : {folder.path(), folder.path() / "snapshots"}) {
+    std::error_code ec;
+    if (!fs::is_directory(dir, ec)) continue;
+    for (const fs::directory_entry& e : fs::directory_iterator(dir, ec)) {
+      const std::string name = e.path().filename().string();
+      if (name.size() > 1 && name[0] == '.' && name.find(".tmp-") != std::string::npos && e.is_regular_file(ec) &&
+          fs::remove(e.path(), ec))
+        ++removed;
+    }
+  }
+  return removed;
+}
+
+// The checkpoints a run.log records as complete (RunRecorder notes "checkpoint at t = ... (step N,
+// stage ...)" once checkpoint.h5 is written): told apart from a run killed before its first one.
+struct CheckpointsLogged {
+  int count = 0;
+  std::int64_t last_step = 0;
+};
+CheckpointsLogged checkpoints_logged(const fs::path& run_log) {
+  CheckpointsLogged logged;
+  std::ifstream in(run_log);
+  const std::string mark = "checkpoint at t = ";
+  for (std::string line; std::getline(in, line);) {
+    if (line.rfind(mark, 0) != 0) continue;
+    const std::size_t step = line.find("(step ");
+    if (step == std::string::npos) continue;
+    ++logged.count;
+    logged.last_step = std::atoll(line.c_str() + step + 6);
+  }
+  return logged;
+}
+
+// Each --allow-change names a key of the run's configuration: a misspelt one would otherwise let
+// nothing through and say nothing (issue 41).
+void check_allowed_changes_are_keys(const FolderRunOptions& o, const std::string& configuration) {
+  if (o.allowed_changes.empty()) return;
+  std::vector<std::string> keys;
+  for (const auto& [key, value] : value_leaves(configuration, "resolved.toml")) keys.push_back(key);
+  for (const std::string& key : o.allowed_changes) {
+    if (std::find(keys.begin(), keys.end(), key) != keys.end()) continue;
+    const std::string nearest = nearest_name(key, keys);
+    throw InputError(fmt::format("--allow-change {}: not a key of this run's configuration{}", key,
+                                 nearest.empty() ? " (resolved.toml lists them)" : fmt::format(" (did you mean {}?)", nearest)));
+  }
+}
+
 // A resume's configuration against the one its checkpoint was taken with: a change of a key not
 // named by --allow-change is refused, naming the first; allowed changes are logged and recorded.
 void check_configuration(const FolderRunOptions& o, const std::map<std::string, std::string>& metadata,
@@ -171,7 +228,8 @@ bool run_logged(const FolderRunOptions& o, std::optional<RunLog>& log) {
   const bool root = !ranks || ranks->root();
   bool resume = !o.resume_dir.empty();
   fs::path out;
-  bool restart = false;  // --resume of a folder stopped before its first checkpoint
+  bool restart = false;  // --resume of a folder without checkpoint.h5
+  CheckpointsLogged lost_checkpoints;  // what run.log says was written of the missing checkpoint.h5
   std::optional<Config> loaded;
   std::optional<FolderLock> lock;  // held by rank 0 until the run's last line (folder_lock.hpp)
   agreed(ranks, [&] {
@@ -184,9 +242,13 @@ bool run_logged(const FolderRunOptions& o, std::optional<RunLog>& log) {
           throw InputError(fmt::format("--resume {}: neither checkpoint.h5 nor resolved.toml there: not a run folder",
                                        out.string()));
         lock_run_folder(lock, folder);
+        restart = !folder.has_checkpoint();
+        if (restart) lost_checkpoints = checkpoints_logged(folder.run_log());
         log.emplace(folder.run_log(), o.quiet);
         log->say(fmt::format("trapdem run --resume {}", out.string()));
-        restart = !folder.has_checkpoint();
+        if (const int removed = remove_interrupted_writes(folder); removed > 0)
+          log->say(fmt::format("removed {} temporary file{} of a write the stop interrupted", removed,
+                               removed == 1 ? "" : "s"));
       }
       loaded = Config::load_file(folder.resolved_toml().string());
     } else {
@@ -201,6 +263,7 @@ bool run_logged(const FolderRunOptions& o, std::optional<RunLog>& log) {
     config.apply_overrides(o.overrides);
     read = ExperimentConfig::from(config);
     configuration = resolved_values(config);
+    check_allowed_changes_are_keys(o, configuration);
   });
   const ExperimentConfig& experiment_config = *read;
   const int threads = o.threads > 0 ? o.threads : experiment_config.numerics.threads;
@@ -214,8 +277,16 @@ bool run_logged(const FolderRunOptions& o, std::optional<RunLog>& log) {
     if (restart) {
       // Killed before its first checkpoint (during it, or earlier): nothing to carry on, so the run
       // starts again from the beginning in the same folder; what it wrote so far is written anew.
-      log->say(fmt::format("no checkpoint.h5 in {} (the run stopped before its first checkpoint was complete): "
-                           "starting it again from the beginning with its resolved.toml", out.string()));
+      // Said also under --quiet: the run's results so far are written anew.
+      if (lost_checkpoints.count == 0)
+        log->warn(fmt::format("no checkpoint.h5 in {} (the run stopped before its first checkpoint was complete): "
+                              "starting it again from the beginning with its resolved.toml", out.string()));
+      else
+        log->warn(fmt::format("checkpoint.h5 is missing from {}, although run.log records {} completed checkpoint{} "
+                              "(the last at step {}): it was deleted or moved; starting the run again from the "
+                              "beginning with its resolved.toml",
+                              out.string(), lost_checkpoints.count, lost_checkpoints.count == 1 ? "" : "s",
+                              lost_checkpoints.last_step));
       for (const fs::path& p : {folder.snapshots_h5(), fs::path(folder.snapshots_h5()).replace_extension(".xmf"),
                                 folder.trapdoor_csv()})
         fs::remove(p);

@@ -26,6 +26,11 @@ void RunLog::say(const std::string& line) {
   note(line);
 }
 
+void RunLog::warn(const std::string& line) {
+  fmt::print(stderr, "{}\n", line);
+  note(line);
+}
+
 void RunLog::note(const std::string& line) {
   errno = 0;
   // fflush after every line: a killed run keeps its log up to its last line.

@@ -20,6 +20,9 @@ class RunLog {
   // A line for the log and (unless quiet) the terminal; FileError naming the file if the write or
   // its flush fails.
   void say(const std::string& line);
+  // A line for the log and the terminal's stderr even when quiet: what the user must know (a
+  // resume that cannot carry on and starts again); FileError as say().
+  void warn(const std::string& line);
   // A line for the log only (checkpoint notes); FileError as say().
   void note(const std::string& line);
 

@@ -119,7 +119,6 @@ std::string expectation(std::string_view what, std::string_view unit, const Rang
   return out;
 }
 
-
 // Inserts `value` at the dotted `key` of `root`, creating tables on the way.
 void insert_at(toml::table& root, std::string_view key, toml::node&& value) {
   const std::vector<std::string> parts = split_key(key);
@@ -771,19 +770,14 @@ std::string suggestion(const Config::State& s, const std::string& unknown) {
   const std::size_t dot = unknown.rfind('.');
   const std::string parent = dot == std::string::npos ? "" : unknown.substr(0, dot + 1);
   const std::string leaf = unknown.substr(parent.size());
-  std::string best;
-  std::size_t best_distance = std::max<std::size_t>(2, leaf.size() / 3) + 1;
+  std::vector<std::string> siblings;  // the known keys beside it, by their last part
   for (const std::string& known : s.used) {
     if (known.compare(0, parent.size(), parent) != 0) continue;
     const std::string known_leaf = known.substr(parent.size());
-    if (known_leaf.find('.') != std::string::npos) continue;
-    const std::size_t d = edit_distance(leaf, known_leaf);
-    if (d < best_distance) {
-      best_distance = d;
-      best = known;
-    }
+    if (known_leaf.find('.') == std::string::npos) siblings.push_back(known_leaf);
   }
-  return best;
+  const std::string best = nearest_name(leaf, siblings);
+  return best.empty() ? "" : parent + best;
 }
 
 }  // namespace

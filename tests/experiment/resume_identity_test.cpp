@@ -97,6 +97,17 @@ TEST(ResumeIdentity, AChangedConfigurationIsRefusedUnlessAllowed) {
   EXPECT_NE(m.find("--allow-change trapdoor.rate"), std::string::npos) << m;
   EXPECT_EQ(read_checkpoint(run / "checkpoint.h5").stats.steps, 300);  // nothing ran
 
+  // A misspelt --allow-change key is refused, naming it and the key meant (issue 41).
+  FolderRunOptions misspelt = resume(run, 400);
+  misspelt.allowed_changes = {"trapdoor.rat"};
+  m = refusal(misspelt);
+  EXPECT_NE(m.find("--allow-change trapdoor.rat: not a key of this run's configuration (did you mean trapdoor.rate?)"),
+            std::string::npos) << m;
+  misspelt.allowed_changes = {"nosuch.key"};
+  m = refusal(misspelt);
+  EXPECT_NE(m.find("--allow-change nosuch.key: not a key of this run's configuration"), std::string::npos) << m;
+  EXPECT_EQ(read_checkpoint(run / "checkpoint.h5").stats.steps, 300);  // nothing ran
+
   // Allowed: it runs, and the change is in run.log, resolved.toml and the next checkpoint.
   FolderRunOptions allowed = resume(run, 400);
   allowed.allowed_changes = {"trapdoor.rate"};
@@ -213,12 +224,41 @@ TEST(ResumeIdentity, AFolderWithoutACheckpointRestartsFromTheBeginning) {
   ScratchDir dir;
   const fs::path run = dir / "run";
   ASSERT_FALSE(run_in_folder(fresh(run, 300)));
-  fs::remove(run / "checkpoint.h5");  // killed while writing its first checkpoint
+  // Killed while writing its first checkpoint: no checkpoint.h5, and run.log without the note that
+  // RunRecorder writes once one is complete.
+  fs::remove(run / "checkpoint.h5");
+  std::string log_text = read_all(run / "run.log");
+  ASSERT_NE(log_text.find("\ncheckpoint at t = "), std::string::npos) << log_text;
+  log_text.erase(log_text.find("\ncheckpoint at t = ") + 1);
+  std::ofstream(run / "run.log", std::ios::trunc) << log_text;
   std::ofstream(run / ".checkpoint.h5.tmp-1-1") << "partial";
+  std::ofstream(run / ".snapshots.h5.tmp-1-2") << "partial";
+  fs::create_directories(run / "snapshots");
+  std::ofstream(run / "snapshots" / ".000003.h5.tmp-1-3") << "partial";
   // --resume is the one command for such a folder (a fresh run into it would mix two logs).
   EXPECT_FALSE(run_in_folder(resume(run, 300)));
+  // The interrupted writes' temporaries are gone (issue 41), and run.log says so.
+  EXPECT_FALSE(fs::exists(run / ".checkpoint.h5.tmp-1-1"));
+  EXPECT_FALSE(fs::exists(run / ".snapshots.h5.tmp-1-2"));
+  EXPECT_FALSE(fs::exists(run / "snapshots" / ".000003.h5.tmp-1-3"));
+  EXPECT_NE(read_all(run / "run.log").find("removed 3 temporary files of a write the stop interrupted"),
+            std::string::npos);
   EXPECT_EQ(read_checkpoint(run / "checkpoint.h5").stats.steps, 300);
-  EXPECT_NE(read_all(run / "run.log").find("starting it again from the beginning"), std::string::npos);
+  EXPECT_NE(read_all(run / "run.log").find("the run stopped before its first checkpoint was complete): starting it again "
+                                           "from the beginning"),
+            std::string::npos);
+
+  // checkpoint.h5 deleted after checkpoints were complete (run.log records them): said so, not
+  // "stopped before its first checkpoint", and on stderr under --quiet too (issue 41).
+  fs::remove(run / "checkpoint.h5");
+  ::testing::internal::CaptureStderr();
+  EXPECT_FALSE(run_in_folder(resume(run, 300)));  // resume() is quiet
+  const std::string said = ::testing::internal::GetCapturedStderr();
+  const std::string truth = "checkpoint.h5 is missing from " + run.string() +
+                            ", although run.log records 1 completed checkpoint (the last at step 300): it was "
+                            "deleted or moved; starting the run again from the beginning";
+  EXPECT_NE(said.find(truth), std::string::npos) << said;
+  EXPECT_NE(read_all(run / "run.log").find(truth), std::string::npos);
   // A folder with neither is no run folder.
   fs::create_directories(dir / "empty");
   EXPECT_NE(refusal(resume(dir / "empty")).find("not a run folder"), std::string::npos);

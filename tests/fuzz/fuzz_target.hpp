@@ -14,6 +14,7 @@
 #include <vector>
 
 #include "core/errors.hpp"
+#include "../io/io_test_support.hpp"
 
 namespace trapdem::fuzzing {
 
@@ -44,11 +45,7 @@ inline std::vector<std::string> split_at_nul(std::string_view text) {
 // A file holding the input, for readers whose entry point takes a path; one per process, rewritten
 // for every input, in a folder of its own (the file name `name` keeps its extension).
 inline std::filesystem::path input_file(std::string_view bytes, const std::string& name) {
-  static const std::filesystem::path dir = [] {
-    const auto d = std::filesystem::temp_directory_path() / ("trapdem-fuzz-" + std::to_string(::getpid()));
-    std::filesystem::create_directories(d);
-    return d;
-  }();
+  static const io_testing::ScratchDir dir("trapdem-fuzz");  // removed at the process's exit
   const auto path = dir / name;
   std::ofstream out(path, std::ios::binary | std::ios::trunc);
   out.write(bytes.data(), static_cast<std::streamsize>(bytes.size()));

@@ -1,5 +1,6 @@
 #pragma once
-// Helpers shared by the io tests: a scratch folder that cleans up after itself, whole-file reads,
+// Helpers shared by the tests: a scratch folder that cleans up after itself (every test's scratch
+// under /tmp is one, so a failed test leaves nothing: tests/scratch_check.sh), whole-file reads,
 // and a scoped file-size limit that makes writes fail as on a full disk.
 #include <sys/resource.h>
 #include <unistd.h>
@@ -18,8 +19,11 @@ namespace trapdem::io_testing {
 
 class ScratchDir {
  public:
-  ScratchDir() {
-    std::string pattern = (std::filesystem::temp_directory_path() / "trapdem-io-XXXXXX").string();
+  // A new folder PREFIX-XXXXXX under the temporary directory (mkdtemp: unique, also between the
+  // parallel processes of ctest -j), removed with everything in it when this goes (a test that
+  // fails included; a helper's function-local static one at the process's exit).
+  explicit ScratchDir(const std::string& prefix = "trapdem-io") {
+    std::string pattern = (std::filesystem::temp_directory_path() / (prefix + "-XXXXXX")).string();
     if (!::mkdtemp(pattern.data())) throw std::runtime_error("mkdtemp failed");
     path_ = pattern;
   }

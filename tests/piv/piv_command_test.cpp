@@ -23,6 +23,7 @@
 #include "piv_test_support.hpp"
 #include "io/hdf5_file.hpp"
 #include "piv_command.hpp"
+#include "../io/io_test_support.hpp"
 
 namespace trapdem {
 namespace {
@@ -58,9 +59,10 @@ std::vector<std::map<std::string, std::string>> read_truth(const fs::path& file)
 }
 
 // Per process: ctest runs the tests of one fixture as parallel processes, which would otherwise
-// remove each other's folders (a fixture's tests share a name).
+// remove each other's folders (a fixture's tests share a name). Removed at the process's exit.
 fs::path fresh_dir(const std::string& name) {
-  const fs::path dir = fs::temp_directory_path() / ("trapdem_piv_command_" + name + "_" + std::to_string(::getpid()));
+  static const io_testing::ScratchDir root("trapdem-piv-command");
+  const fs::path dir = root / name;
   fs::remove_all(dir);
   fs::create_directories(dir);
   return dir;

@@ -1,12 +1,14 @@
 #!/usr/bin/env bash
 # A one-node Slurm cluster for the tests (issue 16): munged, slurmctld and slurmd on this host with
-# a generated minimal slurm.conf, its configuration, key, state and logs in one folder, its sockets
-# (munged's, slurmd's spool where each job step gets one) in a short private folder of their own
-# (mktemp -d /tmp/tdslurm.XXXXXX, named in DIR/runtime and removed by stop): a Unix socket's path
-# is limited to 108 bytes, and DIR lies under the checkout, which may be anywhere.
+# a generated minimal slurm.conf and the logs in DIR; the sockets, key, state and spool in a short
+# private folder of their own (mktemp -d /tmp/tdslurm.XXXXXX, its path in DIR/private), because a
+# Unix socket path holds at most 107 bytes and slurmd's step sockets
+# (SPOOL/NODE_JOBID.STEPID) would not fit under a deep checkout (issue 41).
 #
-#   tests/slurm/cluster.sh start DIR   # starts it, waits until sinfo shows the node idle
-#   tests/slurm/cluster.sh stop DIR    # cancels its jobs, stops the three daemons
+#   tests/slurm/cluster.sh start DIR   # starts it, waits until sinfo shows the node idle and a
+#                                      # job step runs on it
+#   tests/slurm/cluster.sh stop DIR    # cancels its jobs, stops the three daemons, removes the
+#                                      # private folder
 #
 # Clients then use it with SLURM_CONF=DIR/slurm.conf. The node is this host with 2 CPUs, no cgroups
 # (proctrack/linuxproc, task/none), select/cons_tres by CPU, no accounting database; finished jobs
@@ -27,6 +29,8 @@ fail() {
   for f in "$dir"/log/*.log; do
     [ -f "$f" ] && { echo "--- last lines of $f:" >&2; tail -n 15 "$f" >&2; }
   done
+  # A start that failed leaves nothing running and no private folder behind.
+  [ "$action" = start ] && stop_cluster
   exit 1
 }
 
@@ -43,8 +47,13 @@ stop_daemon() {
   rm -f "$pidfile"
 }
 
+# The private folder of the cluster in $dir (empty when there is none).
+private_of() { [ -f "$dir/private" ] && cat "$dir/private" || true; }
+
 stop_cluster() {
   [ -d "$dir" ] || return 0
+  local private
+  private=$(private_of)
   if [ -f "$dir/slurm.conf" ] && [ -f "$dir/slurmctld.pid" ]; then
     export SLURM_CONF="$dir/slurm.conf"
     # Cancel what is left (a failed test's jobs) and give their processes KillWait to end.
@@ -59,13 +68,12 @@ stop_cluster() {
   fi
   stop_daemon "$dir/slurmd.pid"
   stop_daemon "$dir/slurmctld.pid"
-  if [ -f "$dir/runtime" ]; then
-    local runtime
-    runtime=$(cat "$dir/runtime")
-    stop_daemon "$runtime/munged.pid"
-    case "$runtime" in /tmp/tdslurm.*) rm -rf "$runtime" ;; esac
-    rm -f "$dir/runtime"
+  if [ -n "$private" ]; then
+    stop_daemon "$private/munge/munged.pid"
+    # Only a folder this script made: /tmp/tdslurm.XXXXXX.
+    case "$private" in /tmp/tdslurm.*) rm -rf "$private" ;; esac
   fi
+  rm -f "$dir/private"
 }
 
 case "$action" in
@@ -85,33 +93,33 @@ done
 mkdir -p "$dir"
 dir=$(cd "$dir" && pwd)
 stop_cluster  # a cluster left by an earlier run in the same folder
-rm -rf "$dir/state" "$dir/spool" "$dir/log" "$dir/jobcomp.txt"
-mkdir -p "$dir/munge" "$dir/state" "$dir/log"
-chmod 700 "$dir/munge"
-runtime=$(mktemp -d /tmp/tdslurm.XXXXXX) || fail "cannot make a folder for the cluster's sockets under /tmp"
-echo "$runtime" > "$dir/runtime"
-mkdir -p "$runtime/spool"
-chmod 700 "$runtime"
-# The longest socket path: slurmd's step socket, spool/<node>_<job>.<step> with 10-digit numbers.
-longest="$runtime/spool/${host}_4294967295.4294967295"
-if [ ${#longest} -ge 108 ]; then
-  rm -rf "$runtime"; rm -f "$dir/runtime"
-  fail "a Unix socket path would be ${#longest} bytes (limit 108): $longest (the host name '$host' is too long)"
-fi
+rm -rf "$dir/log" "$dir/jobcomp.txt"
+mkdir -p "$dir/log"
+private=$(mktemp -d /tmp/tdslurm.XXXXXX) || fail "could not create a private folder under /tmp"
+echo "$private" > "$dir/private"
+mkdir -p "$private/munge" "$private/state" "$private/spool"
+chmod 700 "$private/munge"
 
-# munge: a key of our own (made once), its socket in the folder.
-key="$dir/munge/munge.key"
-if [ ! -s "$key" ]; then
-  if command -v mungekey > /dev/null; then
-    mungekey --create --keyfile="$key" || fail "mungekey could not create $key"
-  else
-    dd if=/dev/urandom of="$key" bs=1024 count=1 status=none || fail "could not write $key"
+# The longest Unix socket paths the daemons will make: munged's, and slurmd's step sockets
+# SPOOL/NODE_JOBID.STEPID (job and step ids up to 10 digits each). sun_path holds 108 bytes
+# with the closing NUL, so 107 characters at most.
+socket="$private/munge/munge.socket"
+for path in "$socket" "$private/spool/${host}_4294967295.4294967295"; do
+  if [ ${#path} -gt 107 ]; then
+    fail "the socket path '$path' would be ${#path} bytes, more than the 107 a Unix socket path holds (108 with its NUL): nothing started"
   fi
+done
+
+# munge: a key of our own, its socket in the private folder.
+key="$private/munge/munge.key"
+if command -v mungekey > /dev/null; then
+  mungekey --create --keyfile="$key" || fail "mungekey could not create $key"
+else
+  dd if=/dev/urandom of="$key" bs=1024 count=1 status=none || fail "could not write $key"
 fi
 chmod 600 "$key"
-socket="$runtime/munge.socket"
-munged --force --socket="$socket" --key-file="$key" --pid-file="$runtime/munged.pid" \
-  --log-file="$dir/log/munged.log" --seed-file="$dir/munge/munged.seed" \
+munged --force --socket="$socket" --key-file="$key" --pid-file="$private/munge/munged.pid" \
+  --log-file="$dir/log/munged.log" --seed-file="$private/munge/munged.seed" \
   || fail "munged did not start"
 for _ in $(seq 1 20); do [ -S "$socket" ] && break; sleep 0.25; done
 [ -S "$socket" ] || fail "munged started but its socket $socket did not appear"
@@ -132,8 +140,8 @@ SlurmdUser=root
 AuthType=auth/munge
 CredType=cred/munge
 AuthInfo=socket=$socket
-StateSaveLocation=$dir/state
-SlurmdSpoolDir=$runtime/spool
+StateSaveLocation=$private/state
+SlurmdSpoolDir=$private/spool
 SlurmctldPidFile=$dir/slurmctld.pid
 SlurmdPidFile=$dir/slurmd.pid
 SlurmctldLogFile=$dir/log/slurmctld.log
@@ -170,13 +178,21 @@ for _ in $(seq 1 120); do
   [ "$state" = "idle" ] && break
   sleep 0.5
 done
-[ "$state" = "idle" ] || { stop_cluster; fail "the node did not become idle within 60 s (sinfo says '${state:-nothing}')"; }
-# A node can be idle and still unable to launch a job (a step socket it cannot create, a credential it
-# refuses): one short job step now, so that the tests are not the first to wait for it.
-if ! timeout 60 srun -N1 -n1 -t 1 true > "$dir/log/first-step.txt" 2>&1; then
-  reason=$(timeout 10 sinfo -h -n "$host" -o '%t %E' 2>/dev/null || true)
-  cat "$dir/log/first-step.txt" >&2
-  stop_cluster
-  fail "the node is up but could not run a one-step job within 60 s (sinfo: '${reason:-nothing}')"
-fi
-echo "cluster.sh: one-node cluster up: SLURM_CONF=$SLURM_CONF (node $host, 2 CPUs, partition debug)"
+[ "$state" = "idle" ] || fail "the node did not become idle within 60 s (sinfo says '${state:-nothing}')"
+
+# A job step must run: slurmd makes the step's socket in its spool, and a node that cannot launch
+# jobs drains (the job is requeued and would wait for ever). Reported at once with sinfo's reason
+# and slurmd's log (fail prints its end).
+timeout 120 srun -N1 -n1 -t 1 -J cluster-probe true > "$dir/log/probe.out" 2>&1 &
+probe=$!
+while kill -0 "$probe" 2>/dev/null; do
+  node=$(timeout 10 sinfo -h -n "$host" -o '%t|%E' 2>/dev/null || true)
+  case "${node%%|*}" in
+    drain*|drng*|down*|fail*)
+      kill "$probe" 2>/dev/null || true
+      fail "the node cannot launch jobs: sinfo says '${node%%|*}', reason '${node#*|}'" ;;
+  esac
+  sleep 0.5
+done
+wait "$probe" || fail "a one-step probe job (srun true) failed: $(cat "$dir/log/probe.out")"
+echo "cluster.sh: one-node cluster up: SLURM_CONF=$SLURM_CONF (node $host, 2 CPUs, partition debug; sockets, state and spool in $private)"

@@ -29,6 +29,7 @@
 #include "study/cluster_process.hpp"
 #include "../study/tiny_study.hpp"
 #include "study_command.hpp"
+#include "../io/io_test_support.hpp"
 
 namespace fs = std::filesystem;
 using namespace trapdem;
@@ -40,8 +41,10 @@ const std::string kScale = test::tiny_scale("the tiny preset, a shallow pour and
 const std::string kStudy = "name = \"slurm-pair\"\n" + kScale + test::three_mm_of_travel + "[report]\ncontours_at = 0.002\n" +
                            test::smooth_and_rough_cases;
 
+// In a folder of this process's own, removed at its exit (a failed test's too).
 fs::path scratch(const std::string& name) {
-  const fs::path dir = fs::temp_directory_path() / ("trapdem-slurm-" + name + "-" + std::to_string(::getpid()));
+  static const io_testing::ScratchDir root("trapdem-slurm");
+  const fs::path dir = root / name;
   fs::remove_all(dir);
   fs::create_directories(dir);
   return dir;
@@ -57,12 +60,29 @@ ProcessResult trapdem_command(std::vector<std::string> args) {
   return run_process(args);
 }
 
+// The node's state and, when it is drained or down, sinfo's reason (slurmd's, e.g. a step socket
+// it could not create): "idle none", "drain batch job complete failure", ...
+std::string node_state() { return run_process({"sinfo", "-h", "-o", "%t %E"}).output; }
+
+// A node that cannot launch jobs: they are requeued and would stay PENDING for ever.
+bool node_cannot_run_jobs() {
+  const std::string state = node_state();
+  for (const char* bad : {"drain", "drng", "down", "fail"})
+    if (state.rfind(bad, 0) == 0) return true;
+  return false;
+}
+
 std::string queue() { return run_process({"squeue", "-h", "-o", "%i %j %T"}).output; }
 
-// Waits until the cluster's queue is empty (every job of the test ended); false after `seconds`.
+// For a failed wait's message: the queue, and the node's state and reason.
+std::string queue_and_node() { return queue() + "node (sinfo %t %E): " + node_state(); }
+
+// Waits until the cluster's queue is empty (every job of the test ended); false after `seconds`,
+// or at once when the node cannot launch jobs (queue_and_node() then says why).
 bool queue_empties_within(double seconds) {
   const auto deadline = std::chrono::steady_clock::now() + std::chrono::duration<double>(seconds);
   while (std::chrono::steady_clock::now() < deadline) {
+    if (node_cannot_run_jobs()) return false;
     const ProcessResult r = run_process({"squeue", "-h", "-o", "%i"});
     if (r.exit_code == 0 && r.output.empty()) return true;
     std::this_thread::sleep_for(std::chrono::milliseconds(500));
@@ -128,7 +148,7 @@ class SlurmCluster : public ::testing::Test {
     // The fixture's cluster answers, and nothing of an earlier test is left in its queue.
     const ProcessResult r = run_process({"sinfo", "-h", "-o", "%R %t"});
     ASSERT_EQ(r.exit_code, 0) << "the test cluster does not answer (slurm.cluster_start failed?): " << r.errors;
-    ASSERT_TRUE(queue_empties_within(60)) << "jobs left in the queue: " << queue();
+    ASSERT_TRUE(queue_empties_within(60)) << "jobs left in the queue: " << queue_and_node();
   }
 };
 
@@ -163,7 +183,7 @@ TEST_F(SlurmCluster, SubmittedStudyEndsWithTheNumbersOfALocalRun) {
   here.threads = 1;
   here.quiet = true;
   ASSERT_EQ(app::run_study(here), 0);
-  ASSERT_TRUE(queue_empties_within(300)) << queue();
+  ASSERT_TRUE(queue_empties_within(300)) << queue_and_node();
 
   // A run at a given thread count is bitwise reproducible: the numbers are the same, exactly.
   ASSERT_TRUE(fs::exists(out / "report" / "summary.json")) << "the report job wrote no report";
@@ -216,7 +236,7 @@ label = "Only"
          std::chrono::steady_clock::now() < deadline)
     std::this_thread::sleep_for(std::chrono::milliseconds(100));
   ASSERT_EQ(run_process({"scancel", first.array}).exit_code, 0);
-  ASSERT_TRUE(queue_empties_within(120)) << queue();
+  ASSERT_TRUE(queue_empties_within(120)) << queue_and_node();
 
   // SIGTERM from Slurm: the run wrote a checkpoint and stopped; --status reads it so.
   const std::string log = read_text_file(run_dir / "run.log");
@@ -231,7 +251,7 @@ label = "Only"
   submitted = trapdem_command(submit);
   ASSERT_EQ(submitted.exit_code, 0) << submitted.output << submitted.errors;
   EXPECT_TRUE(contains(submitted.output, "(1 of 1 runs;")) << submitted.output;
-  ASSERT_TRUE(queue_empties_within(300)) << queue();
+  ASSERT_TRUE(queue_empties_within(300)) << queue_and_node();
   const std::string resumed = read_text_file(run_dir / "run.log");
   EXPECT_TRUE(contains(resumed, "trapdem run --resume " + run_dir.string())) << resumed;
   EXPECT_TRUE(std::regex_search(resumed, std::regex("resumed .* at t = .* \\(step [1-9][0-9]*, stage "))) << resumed;
@@ -308,6 +328,6 @@ TEST_F(SlurmCluster, CalibrationGridIsSubmittedAsAnArray) {
   status.push_back("--status");
   EXPECT_TRUE(contains(trapdem_command(status).output, "2 runs: 2 not started"));
   ASSERT_EQ(run_process({"scancel", jobs.array, jobs.report}).exit_code, 0);
-  ASSERT_TRUE(queue_empties_within(60)) << queue();
+  ASSERT_TRUE(queue_empties_within(60)) << queue_and_node();
   fs::remove_all(dir);
 }

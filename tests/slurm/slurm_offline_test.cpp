@@ -24,14 +24,17 @@
 #include "study/study_runner.hpp"
 #include "study/study_status.hpp"
 #include "study_command.hpp"
+#include "../io/io_test_support.hpp"
 
 namespace fs = std::filesystem;
 using namespace trapdem;
 
 namespace {
 
+// In a folder of this process's own, removed at its exit (a failed test's too).
 fs::path scratch(const std::string& name) {
-  const fs::path dir = fs::temp_directory_path() / ("trapdem-slurm-" + name + "-" + std::to_string(::getpid()));
+  static const io_testing::ScratchDir root("trapdem-slurm");
+  const fs::path dir = root / name;
   fs::remove_all(dir);
   fs::create_directories(dir);
   return dir;

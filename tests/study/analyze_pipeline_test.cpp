@@ -13,6 +13,7 @@
 #include "core/json.hpp"
 #include "study/run_analysis.hpp"
 #include "synthetic_run.hpp"
+#include "../io/io_test_support.hpp"
 
 using namespace trapdem;
 namespace fs = std::filesystem;
@@ -26,7 +27,11 @@ Json read_metrics(const fs::path& dir) {
   return Json::parse(text.str(), "metrics.json");
 }
 
-fs::path scratch(const std::string& name) { return fs::temp_directory_path() / ("trapdem-analyze-" + name); }
+// In a folder of this process's own, removed at its exit (a failed test's too).
+fs::path scratch(const std::string& name) {
+  static const io_testing::ScratchDir root("trapdem-analyze");
+  return root / name;
+}
 
 double standard_normal_cdf(double t) { return 0.5 * std::erfc(-t / std::sqrt(2.0)); }
 

@@ -17,6 +17,7 @@
 #include "plot/colour_map.hpp"
 #include "study/ground_reaction_overlay.hpp"
 #include "../plot/png_image.hpp"
+#include "../io/io_test_support.hpp"
 
 namespace trapdem {
 namespace {
@@ -57,7 +58,7 @@ int pixels_of(const test::PngImage& image, plot::Rgb c) {
 }
 
 TEST(FigureGrc, OneCurvePerRun) {
-  const fs::path root = fs::temp_directory_path() / "trapdem-figure-grc";
+  const io_testing::ScratchDir root("trapdem-figure-grc");
   const std::vector<std::string> dirs{make_run(root / "loose", "rf1", 0.2).string(),
                                       make_run(root / "dense", "rf1", 0.4).string(),
                                       make_run(root / "other", "rf2", 0.6).string()};
@@ -91,7 +92,7 @@ TEST(FigureGrc, OneCurvePerRun) {
 }
 
 TEST(FigureGrc, BadInputNamesTheProblem) {
-  const fs::path root = fs::temp_directory_path() / "trapdem-figure-grc-bad";
+  const io_testing::ScratchDir root("trapdem-figure-grc-bad");
   make_run(root / "a", "a", 0.3);
   make_run(root / "b", "b", 0.3);
   fs::remove(root / "b" / "trapdoor.csv");

@@ -8,14 +8,13 @@
 
 #include "core/errors.hpp"
 #include "study/study_definition.hpp"
+#include "../io/io_test_support.hpp"
 
 namespace trapdem::study_test {
 
 // `text` as `name` in a folder of this process's own under the temporary directory.
 inline std::filesystem::path write_study(const std::string& name, const std::string& text) {
-  const std::filesystem::path dir =
-      std::filesystem::temp_directory_path() / ("trapdem-study-file-" + std::to_string(::getpid()));
-  std::filesystem::create_directories(dir);
+  static const io_testing::ScratchDir dir("trapdem-study-file");  // removed at the process's exit
   const std::filesystem::path file = dir / name;
   std::ofstream(file) << text;
   return file;
