@@ -1,8 +1,8 @@
 #pragma once
 // The contact law composed of its sub-models (models.hpp lists them): normal (normal_linear.hpp,
 // normal_hertz.hpp), damping (damping.hpp), tangential (tangential_coulomb.hpp: spring with
-// static/kinetic friction; tangential_blaze_viscous.hpp) and rolling (rolling_none.hpp,
-// rolling_constant_torque.hpp, rolling_epsd.hpp, rolling_angular_damping.hpp).
+// static/kinetic friction; tangential_blaze_viscous.hpp, tangential_blaze_tresca.hpp) and rolling
+// (rolling_none.hpp, rolling_constant_torque.hpp, rolling_epsd.hpp, rolling_angular_damping.hpp).
 // ContactEvaluator<choices> holds the whole law for one set of choices; the pair and wall batch
 // loops (pair_sweep.cpp, wall_sweep.cpp) call it, each written once for every law
 // (law_dispatch.hpp picks the instance). Its branches on per-contact values must stay
@@ -72,7 +72,7 @@ struct ContactEvaluator {
     tangential_in.normal_force = fn_abs;
     tangential_in.stiffness = r.tangential_stiffness;
     tangential_in.dashpot = c_n * r.sqrt_tangential_over_normal;
-    tangential_in.centre_speed = Tangential::needs_tangential_mass ? norm(relative_velocity) : 0.0;
+    tangential_in.centre_speed = Tangential::needs_tangential_mass ? norm(relative_velocity) : 0.0;  // Blaze-DEM's models
     tangential_in.mean_mass = b.mean_mass;
     tangential_in.tangential_mass = b.tangential_mass;
     tangential_in.dt = dt;
