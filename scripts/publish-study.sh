@@ -11,6 +11,8 @@
 # --figures: each run's analysis figures too (analysis/*.png, .svg, .pdf: ~1 MB a run), for runs
 #   whose snapshots will not outlive their machine: the report draws no figure of a run without
 #   them (docs/study.md), so these are then the only pictures of it.
+# The checkout's absolute path in the copied text files (a packing's `from`, the configuration's
+# path in resolved.toml and run.log) is written `<checkout>/`: what is published names no machine.
 # DEST_DIR's files are replaced one by one (a file that is no longer in the study stays: remove
 # DEST_DIR first for an exact copy), but for study.log, whose published lines are kept and the
 # study's new ones added after them.
@@ -33,6 +35,13 @@ done
 mkdir -p "$dest"
 
 copied=0
+checkout=$(cd "$(dirname "$0")/.." && pwd -P)
+# Copies FILE to TARGET with the checkout's absolute path replaced by `<checkout>/` (escaped in HTML).
+copy_text() {
+  local marker='<checkout>/'
+  case $1 in *.html) marker='\&lt;checkout\&gt;/' ;; esac
+  sed "s|$checkout/|$marker|g" "$1" > "$2"
+}
 # A run is a folder under cases/ with a resolved.toml (cases/NAME or cases/NAME/seed-S).
 while IFS= read -r -d '' resolved; do
   run=$(dirname "$resolved")
@@ -41,9 +50,10 @@ while IFS= read -r -d '' resolved; do
     continue
   fi
   mkdir -p "$dest/$rel"
-  for f in run.json resolved.toml trapdoor.csv run.log deposit.json; do
-    [ -f "$run/$f" ] && cp "$run/$f" "$dest/$rel/$f"
+  for f in run.json resolved.toml run.log deposit.json; do
+    [ -f "$run/$f" ] && copy_text "$run/$f" "$dest/$rel/$f"
   done
+  [ -f "$run/trapdoor.csv" ] && cp "$run/trapdoor.csv" "$dest/$rel/trapdoor.csv"
   if [ -f "$run/analysis/metrics.json" ]; then
     mkdir -p "$dest/$rel/analysis"
     cp "$run/analysis/metrics.json" "$dest/$rel/analysis/metrics.json"
@@ -58,9 +68,16 @@ done < <(find "$study/cases" -name resolved.toml -print0 | sort -z)
 
 if [ -d "$study/report" ]; then
   mkdir -p "$dest/report"
-  find "$study/report" -maxdepth 1 -type f ! -name '*.h5' -exec cp {} "$dest/report/" \;
+  for f in "$study/report"/*; do
+    [ -f "$f" ] || continue
+    case $f in
+      *.h5) ;;
+      *.html | *.csv | *.json | *.txt) copy_text "$f" "$dest/report/$(basename "$f")" ;;
+      *) cp "$f" "$dest/report/" ;;
+    esac
+  done
 fi
-[ -f "$study/study.json" ] && cp "$study/study.json" "$dest/study.json"
+[ -f "$study/study.json" ] && copy_text "$study/study.json" "$dest/study.json"
 # study.log: the lines published before stay, and this folder's are added after them, each line
 # once. A study carried from machine to machine (one case a session, each in a new folder) keeps
 # its whole history, whether or not the new folder began from the published log.
