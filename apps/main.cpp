@@ -17,6 +17,7 @@
 #include "core/exit_codes.hpp"
 #include "core/nearest_name.hpp"
 #include "core/thread_count.hpp"
+#include "core/wait_policy.hpp"
 #include "deposit_command.hpp"
 #include "element_command.hpp"
 #include "piv_command.hpp"
@@ -68,6 +69,9 @@ std::string unknown_command_message(const CLI::App& app, int argc, char** argv) 
 }  // namespace
 
 int main(int argc, char** argv) {
+  // Before anything starts a thread: on a crowded host, threads that sleep while they wait (this
+  // may re-execute the program; src/core/wait_policy.hpp).
+  trapdem::wait_passively_when_crowded(argc, argv);
   CLI::App app{"trapdem: trapdoor experiments with the discrete element method"};
   // Every --threads: 0 (all cores) up to trapdem::kMaxThreads, with a message that says so (CLI11's
   // NonNegativeNumber printed a 309-digit bound for "abc" and let 100000 through to libgomp).

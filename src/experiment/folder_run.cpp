@@ -1,6 +1,7 @@
 #include "experiment/folder_run.hpp"
 
 #include <omp.h>
+#include <unistd.h>
 
 #include <algorithm>
 #include <atomic>
@@ -14,6 +15,8 @@
 #include <fmt/format.h>
 
 #include "core/errors.hpp"
+#include "core/host_load.hpp"
+#include "core/wait_policy.hpp"
 #include "core/nearest_name.hpp"
 #include "core/thread_count.hpp"
 #include "experiment/run_folder.hpp"
@@ -211,6 +214,21 @@ void report_halo(RunRecorder& recorder, RunRanks& ranks, const Simulation& sim, 
                              r, all[3 * r], all[3 * r + 1], all[3 * r + 2] * 1e6));
 }
 
+// Warns in run.log and on the terminal when the threads of this run (x its ranks on this host) and
+// of the other trapdem runs registered on the host exceed its usable cores. On ranks every rank is
+// registered before rank 0 reads the registry (the gather waits for all), and its sibling ranks
+// are counted once, as this run's.
+void warn_if_host_oversubscribed(RunRanks* ranks, std::optional<RunLog>& log) {
+  std::vector<double> sibling_pids{double(::getpid())};
+  if (ranks) sibling_pids = ranks->gather_on_root(sibling_pids);
+  if (ranks && !ranks->root()) return;
+  HostLoad load = current_host_load(omp_get_max_threads(), ranks ? local_rank_count() : 1);
+  std::erase_if(load.others, [&](const RegisteredRun& other) {
+    return std::find(sibling_pids.begin(), sibling_pids.end(), double(other.pid)) != sibling_pids.end();
+  });
+  if (const std::string warning = load.warning(wait_policy()); !warning.empty() && log) log->warn(warning);
+}
+
 // Takes the run folder's lock before anything in it is written: a second process on the same
 // folder (a study submitted twice, a hand resume beside a running Slurm task) is refused instead of
 // both overwriting its checkpoint.h5 and snapshots.
@@ -316,6 +334,11 @@ bool run_logged(const FolderRunOptions& o, std::optional<RunLog>& log) {
       write_text_atomically(folder.resolved_toml(), record + config.resolved_toml());
     }
   });
+
+  // This run in the host's run registry while it lives, and a warning when it and the others
+  // registered there ask for more threads than the host has cores (host_load.hpp).
+  const RunRegistration registration(omp_get_max_threads(), fs::absolute(out).lexically_normal().string());
+  warn_if_host_oversubscribed(ranks, log);
 
   std::optional<TrapdoorExperiment> built;
   agreed(ranks, [&] {
