@@ -15,9 +15,11 @@ FilteredMesh filter_triangles(const TriangleMesh& mesh, const std::vector<Point2
     const auto corners = triangle_corners(mesh.triangles[t], nodes);
     if (longest_edge(corners) > max_edge) {
       ++result.dropped_long_edge;
+      result.dropped.triangles.push_back(mesh.triangles[t]);
     } else if (smallest_angle_deg(corners) < settings.min_angle_deg ||
                radius_ratio(corners) > settings.max_radius_ratio) {
       ++result.dropped_sliver;
+      result.dropped.triangles.push_back(mesh.triangles[t]);
     } else {
       result.mesh.triangles.push_back(mesh.triangles[t]);
       result.source_index.push_back(t);

@@ -23,6 +23,7 @@ struct FilteredMesh {
   std::vector<std::size_t> source_index;   // for each kept triangle, its index in the input mesh
   std::size_t dropped_long_edge = 0;       // longest edge above the limit (checked first)
   std::size_t dropped_sliver = 0;          // small angle or large radius ratio (edge test passed)
+  TriangleMesh dropped;                    // the triangles left out, in input order (hole_fill.hpp)
 };
 
 // Applies the tests in the reference configuration `nodes`. Throws InputError if

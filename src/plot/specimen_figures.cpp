@@ -8,6 +8,7 @@
 #include "plot/colour_bar.hpp"
 #include "plot/colour_map.hpp"
 #include "analysis/field_smoothing.hpp"
+#include "analysis/hole_fill.hpp"
 #include "plot/canvas.hpp"
 
 namespace trapdem::plot {
@@ -147,34 +148,54 @@ double bottom_margin(double font_size) { return 3.5 * font_size; }
 // Right of a map: the colour bar, its numbers and its label.
 constexpr double kBarGap = 14.0, kBarWidth = 16.0, kRightMargin = 150.0;
 
-// Fills each kept triangle at its reference position with colour(t) (its value's colour).
+void trace_triangle(cairo_t* cr, const PlotFrame& f, const AnalysisResult& r, const TriangleNodes& tri) {
+  for (int c = 0; c < 3; ++c) {
+    const Point2 p = r.points.position[tri[static_cast<std::size_t>(c)]];
+    if (c == 0) cairo_move_to(cr, f.px(p.x * mm), f.py(p.z * mm));
+    else cairo_line_to(cr, f.px(p.x * mm), f.py(p.z * mm));
+  }
+  cairo_close_path(cr);
+}
+
+// Fills each kept triangle at its reference position with its value's colour (`colour(value)`),
+// and the triangles the filter dropped inside the specimen with their neighbours' mean
+// (hole_fill.hpp), so that the map has no holes; the dropped triangles at the boundary stay
+// light grey (empty space).
 template <class Colour>
-void fill_triangles(cairo_t* cr, const PlotFrame& f, const AnalysisResult& r, Colour colour) {
+void fill_triangles(cairo_t* cr, const PlotFrame& f, const AnalysisResult& r, const std::vector<double>& values,
+                    Colour colour) {
   cairo_save(cr);
   f.clip(cr);
-  // Specimen background: empty space light grey, so dropped triangles read as gaps.
   cairo_set_source_rgb(cr, 0.93, 0.93, 0.93);
   cairo_paint(cr);
   cairo_set_antialias(cr, CAIRO_ANTIALIAS_NONE);
-  for (std::size_t t = 0; t < r.mesh.mesh.size(); ++t) {
-    const auto& tri = r.mesh.mesh.triangles[t];
-    set_colour(cr, colour(t));
-    for (int c = 0; c < 3; ++c) {
-      const Point2 p = r.points.position[tri[static_cast<std::size_t>(c)]];
-      if (c == 0) cairo_move_to(cr, f.px(p.x * mm), f.py(p.z * mm));
-      else cairo_line_to(cr, f.px(p.x * mm), f.py(p.z * mm));
-    }
-    cairo_close_path(cr);
+  const auto fill = [&](const TriangleNodes& tri, double value) {
+    set_colour(cr, colour(value));
+    trace_triangle(cr, f, r, tri);
     cairo_fill_preserve(cr);
     cairo_set_line_width(cr, 0.5);
     cairo_stroke(cr);  // closes hairline seams between neighbours
-  }
+  };
+  for (std::size_t t = 0; t < r.mesh.mesh.size(); ++t) fill(r.mesh.mesh.triangles[t], values[t]);
+  const FilledHoles holes = fill_interior_holes(r.mesh, values);
+  for (std::size_t t = 0; t < holes.triangles.size(); ++t) fill(holes.triangles.triangles[t], holes.values[t]);
   cairo_set_antialias(cr, CAIRO_ANTIALIAS_DEFAULT);
   cairo_restore(cr);
   cairo_save(cr);
   f.clip(cr);
   draw_base_and_trapdoor(cr, f, r);
   cairo_restore(cr);
+}
+
+// For a map's caption: what the filter dropped and how the map shows it.
+std::string dropped_triangles_text(const AnalysisResult& r, const std::vector<double>& values) {
+  const std::size_t dropped = r.mesh.dropped_long_edge + r.mesh.dropped_sliver;
+  if (dropped == 0) return "no triangle dropped";
+  const FilledHoles holes = fill_interior_holes(r.mesh, values);
+  return fmt::format("{} triangles dropped ({} long-edge, {} sliver): {} inside drawn with their neighbours' mean, {} at "
+                     "the boundary left blank",
+                     dropped, r.mesh.dropped_long_edge, r.mesh.dropped_sliver, holes.triangles.size(),
+                     holes.left_empty);
 }
 
 // The page of a single-map figure: the title block on top (wrapped to the width), the map below
@@ -229,7 +250,7 @@ PlotFrame draw_strain_map(cairo_t* cr, Rect area, const AnalysisResult& r, Strai
   const PlotFrame f = map_frame(area, r, left_margin(font_size), bottom_margin(font_size));
   const ColourMap map(ColourMapKind::viridis);
   const auto& values = strain_values(r, kind);
-  fill_triangles(cr, f, r, [&](std::size_t t) { return map.of(values[t], 0.0, vmax); });
+  fill_triangles(cr, f, r, values, [&](double v) { return map.of(v, 0.0, vmax); });
   if (kind == StrainKind::total) draw_band_traces(cr, f, r);
   draw_specimen_axes(cr, f, font_size);
   return f;
@@ -243,8 +264,9 @@ PlotFrame write_strain_map(const std::filesystem::path& path, const AnalysisResu
   const std::string smoothing = shows_smoothed(r, kind) ? "; " + smoothing_text(r) : std::string();
   const std::string bands = kind == StrainKind::total ? "; dashed: traced band centres (orange: branches)" : "";
   MapPage page(r, width, fmt::format("{}: {}", r.geometry.name, what),
-               fmt::format("{}; strain from {}, on the reference positions{}; {}{}", displacement_text(r),
-                           format_mm(r.reference_displacement), smoothing, view_text(r), bands));
+               fmt::format("{}; strain from {}, on the reference positions{}; {}{}; {}", displacement_text(r),
+                           format_mm(r.reference_displacement), smoothing, view_text(r), bands,
+                           dropped_triangles_text(r, strain_values(r, kind))));
   cairo_t* cr = page.canvas.cr();
   const PlotFrame f =
       draw_strain_map(cr, {0.0, page.top, width - kRightMargin, page.plot_h + bottom_margin(kFontSmall)}, r, kind, vmax);
@@ -265,12 +287,13 @@ PlotFrame write_volumetric_strain_map(const std::filesystem::path& path, const A
   const bool smoothed = r.settings.bands.smoothing_diameters > 0.0;
   MapPage page(r, width, fmt::format("{}: volumetric strain εv (total)", r.geometry.name),
                fmt::format("{}; strain from {}, on the reference positions{}; {}; red: compression (εv > 0), blue: "
-                           "dilation (εv < 0)",
+                           "dilation (εv < 0); {}",
                            displacement_text(r), format_mm(r.reference_displacement),
-                           smoothed ? "; " + smoothing_text(r) : std::string(), view_text(r)));
+                           smoothed ? "; " + smoothing_text(r) : std::string(), view_text(r),
+                           dropped_triangles_text(r, values)));
   cairo_t* cr = page.canvas.cr();
   const ColourMap map(ColourMapKind::diverging);
-  fill_triangles(cr, page.frame, r, [&](std::size_t t) { return map.of(values[t], -vmax, vmax); });
+  fill_triangles(cr, page.frame, r, values, [&](double v) { return map.of(v, -vmax, vmax); });
   draw_specimen_axes(cr, page.frame, kFontSmall);
   draw_colour_bar(cr, page.bar(false), map, -vmax, vmax, bar_style("volumetric strain εv (-), compression +"));
   page.canvas.write(path);
@@ -425,7 +448,7 @@ std::vector<PlotFrame> write_strain_panel(const std::filesystem::path& path,
     const PlotFrame f({cell_x + left, cell_y + label_h, x.span() * units_per_mm, plot_h}, x, z);
     const ColourMap map(ColourMapKind::viridis);
     const auto& values = strain_values(r, StrainKind::total);
-    fill_triangles(cr, f, r, [&](std::size_t t) { return map.of(values[t], 0.0, vmax); });
+    fill_triangles(cr, f, r, values, [&](double v) { return map.of(v, 0.0, vmax); });
     draw_band_traces(cr, f, r);
     draw_specimen_axes(cr, f, font, k / columns + 1 == rows || k + columns >= n);
     const double centre = f.pixels().x + 0.5 * f.pixels().w;

@@ -1,0 +1,123 @@
+// Dropped triangles inside a mesh drawn with their neighbours' values (src/analysis/hole_fill.hpp,
+// issue 41): holes inside are filled layer by layer from the kept triangles, dropped triangles that
+// reach the outer boundary through dropped ones stay empty.
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cmath>
+
+#include "analysis/hole_fill.hpp"
+#include "core/errors.hpp"
+
+using namespace trapdem;
+
+namespace {
+
+// A square grid of n x n cells, each split into two triangles (2 n^2 triangles; triangle 2 (i + n j)
+// and 2 (i + n j) + 1 in cell (i, j)), all kept.
+TriangleMesh grid_mesh(std::size_t n) {
+  TriangleMesh mesh;
+  const auto node = [n](std::size_t i, std::size_t j) { return i + (n + 1) * j; };
+  for (std::size_t j = 0; j < n; ++j)
+    for (std::size_t i = 0; i < n; ++i) {
+      mesh.triangles.push_back({node(i, j), node(i + 1, j), node(i + 1, j + 1)});
+      mesh.triangles.push_back({node(i, j), node(i + 1, j + 1), node(i, j + 1)});
+    }
+  return mesh;
+}
+
+// The grid with the triangles in `drop` moved to the dropped list; kept values: the triangle's
+// index in the full grid (so a neighbour's value names it).
+FilteredMesh with_dropped(const TriangleMesh& full, const std::vector<std::size_t>& drop, std::vector<double>& values) {
+  FilteredMesh m;
+  values.clear();
+  for (std::size_t t = 0; t < full.size(); ++t) {
+    if (std::find(drop.begin(), drop.end(), t) != drop.end()) {
+      m.dropped.triangles.push_back(full.triangles[t]);
+      ++m.dropped_long_edge;
+    } else {
+      m.mesh.triangles.push_back(full.triangles[t]);
+      m.source_index.push_back(t);
+      values.push_back(double(t));
+    }
+  }
+  return m;
+}
+
+}  // namespace
+
+// One triangle dropped in the middle of a 4 x 4 grid: filled with the mean of its three
+// neighbours. Triangle 2 (1 + 4) + 1 = 11 (the upper one of cell (1, 1), corners (1,1) (2,2)
+// (1,2)) borders 10 (its cell's lower triangle, across the diagonal), 18 (the lower one of cell
+// (1, 2), across the top edge) and 8 (the lower one of cell (0, 1), across the left edge).
+TEST(HoleFill, OneTriangleInsideTakesItsNeighboursMean) {
+  std::vector<double> values;
+  const FilteredMesh m = with_dropped(grid_mesh(4), {11}, values);
+  const FilledHoles f = fill_interior_holes(m, values);
+  ASSERT_EQ(f.triangles.size(), 1u);
+  EXPECT_EQ(f.left_empty, 0u);
+  EXPECT_NEAR(f.values[0], (8.0 + 10.0 + 18.0) / 3.0, 1e-12);
+}
+
+// A hole of 2 x 2 cells (8 triangles): six fill from their kept neighbours; two have none (the
+// lower triangle of cell (2, 3) and the upper one of cell (3, 2): all three of their edges face
+// dropped triangles) and fill from the first layer in a second one, so all 8 are filled. Every
+// value lies within the kept values' range (a mean of means).
+TEST(HoleFill, DeeperHolesFillLayerByLayer) {
+  std::vector<double> values;
+  // A 6 x 6 grid with the 2 x 2 block of cells (2..3, 2..3) dropped (8 triangles).
+  std::vector<std::size_t> drop;
+  for (std::size_t j = 2; j <= 3; ++j)
+    for (std::size_t i = 2; i <= 3; ++i) {
+      drop.push_back(2 * (i + 6 * j));
+      drop.push_back(2 * (i + 6 * j) + 1);
+    }
+  const FilteredMesh m = with_dropped(grid_mesh(6), drop, values);
+  const FilledHoles f = fill_interior_holes(m, values);
+  EXPECT_EQ(f.triangles.size(), 8u);
+  EXPECT_EQ(f.left_empty, 0u);
+  const double lo = *std::min_element(values.begin(), values.end());
+  const double hi = *std::max_element(values.begin(), values.end());
+  for (const double v : f.values) {
+    EXPECT_TRUE(std::isfinite(v));
+    EXPECT_GT(v, lo);
+    EXPECT_LT(v, hi);
+  }
+}
+
+// Dropped triangles along the boundary, and a dropped strip reaching in from it, are empty space
+// (the free surface): left blank, while a separate hole inside is filled.
+TEST(HoleFill, DroppedTrianglesReachingTheBoundaryStayEmpty) {
+  std::vector<double> values;
+  // 6 x 6 grid: the top row's cells (j = 5) dropped, and below it cell (2, 4) too (connected to
+  // the top row through its upper triangle); cell (4, 1)'s upper triangle is a hole inside.
+  std::vector<std::size_t> drop;
+  for (std::size_t i = 0; i < 6; ++i) {
+    drop.push_back(2 * (i + 6 * 5));
+    drop.push_back(2 * (i + 6 * 5) + 1);
+  }
+  drop.push_back(2 * (2 + 6 * 4));
+  drop.push_back(2 * (2 + 6 * 4) + 1);
+  const std::size_t inside = 2 * (4 + 6 * 1) + 1;
+  drop.push_back(inside);
+  const FilteredMesh m = with_dropped(grid_mesh(6), drop, values);
+  const FilledHoles f = fill_interior_holes(m, values);
+  ASSERT_EQ(f.triangles.size(), 1u);
+  EXPECT_EQ(f.left_empty, drop.size() - 1);
+  EXPECT_EQ(f.triangles.triangles[0], grid_mesh(6).triangles[inside]);
+}
+
+TEST(HoleFill, NothingDroppedNothingFilled) {
+  std::vector<double> values;
+  const FilteredMesh m = with_dropped(grid_mesh(3), {}, values);
+  const FilledHoles f = fill_interior_holes(m, values);
+  EXPECT_EQ(f.triangles.size(), 0u);
+  EXPECT_EQ(f.left_empty, 0u);
+}
+
+TEST(HoleFill, ValuesMustMatchTheKeptTriangles) {
+  std::vector<double> values;
+  const FilteredMesh m = with_dropped(grid_mesh(3), {4}, values);
+  values.pop_back();
+  EXPECT_THROW(fill_interior_holes(m, values), InputError);
+}
