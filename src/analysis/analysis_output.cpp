@@ -197,6 +197,7 @@ Json metrics_json(const AnalysisResult& r) {
   // read this list).
   Json warnings = Json::array();
   if (const std::string text = side_wall_warning_text(r); !text.empty()) warnings.push_back(text);
+  for (const std::string& text : r.unmatched_ids) warnings.push_back(text);
   j.set("warnings", warnings);
   return j;
 }
@@ -383,6 +384,7 @@ std::string metrics_table(const AnalysisResult& r) {
   }
   s += fmt::format("; shape ratio {} (mid-height width / B)\n", num(r.zone.shape_ratio, "{:.2f}"));
   if (const std::string text = side_wall_warning_text(r); !text.empty()) s += "  WARNING: " + text + "\n";
+  for (const std::string& text : r.unmatched_ids) s += "  WARNING: " + text + "\n";
   return s;
 }
 

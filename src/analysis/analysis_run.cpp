@@ -71,6 +71,41 @@ double quantile(std::vector<double> values, double q) {
   return values[i] + (s - static_cast<double>(i)) * (values[i + 1] - values[i]);
 }
 
+namespace {
+
+// For each frame after the reference: its ids missing from the reference, and the reference's ids
+// missing from it, each with the first few ids (a particle left out of the analysis is named).
+std::vector<std::string> unmatched_id_warnings(const std::vector<AnalysisFrame>& frames,
+                                               const std::vector<std::unordered_map<std::int64_t, std::size_t>>& index) {
+  const auto listed = [](const std::vector<std::int64_t>& ids) {
+    constexpr std::size_t kShown = 5;
+    std::string text;
+    for (std::size_t i = 0; i < std::min(ids.size(), kShown); ++i) text += (i ? ", " : "") + std::to_string(ids[i]);
+    return ids.size() > kShown ? text + ", ..." : text;
+  };
+  std::vector<std::string> warnings;
+  const Snapshot& ref = frames.front().snapshot;
+  for (std::size_t f = 1; f < frames.size(); ++f) {
+    std::vector<std::int64_t> missing, unknown;
+    for (std::size_t k = 0; k < ref.size(); ++k)
+      if (!index[f].count(ref.id[k])) missing.push_back(ref.id[k]);
+    for (const std::int64_t id : frames[f].snapshot.id)
+      if (!index.front().count(id)) unknown.push_back(id);
+    if (!missing.empty())
+      warnings.push_back(fmt::format("{} particle{} of the reference {} {} missing from {} (id {}): left out of the "
+                                     "analysis",
+                                     missing.size(), missing.size() == 1 ? "" : "s", frames.front().label,
+                                     missing.size() == 1 ? "is" : "are", frames[f].label, listed(missing)));
+    if (!unknown.empty())
+      warnings.push_back(fmt::format("{} particle{} of {} {} not in the reference {} (id {}): left out of the analysis",
+                                     unknown.size(), unknown.size() == 1 ? "" : "s", frames[f].label,
+                                     unknown.size() == 1 ? "is" : "are", frames.front().label, listed(unknown)));
+  }
+  return warnings;
+}
+
+}  // namespace
+
 AnalysisResult analyze_frames(const std::vector<AnalysisFrame>& frames, const SpecimenGeometry& geometry,
                               AnalysisSettings settings) {
   if (frames.size() < 2) throw InputError("the analysis needs a reference and a current snapshot");
@@ -88,12 +123,17 @@ AnalysisResult analyze_frames(const std::vector<AnalysisFrame>& frames, const Sp
                                  format_mm(r.trapdoor_travel()), r.reference_label, r.at_label));
   }
 
-  // Index of every id in each frame; keep ids present in all.
+  // Index of every id in each frame (an id twice in one frame is refused: the particles could not
+  // be followed); keep ids present in all, and say which are not.
   std::vector<std::unordered_map<std::int64_t, std::size_t>> index(frames.size());
   for (std::size_t f = 0; f < frames.size(); ++f) {
     const Snapshot& s = frames[f].snapshot;
     index[f].reserve(s.size());
-    for (std::size_t k = 0; k < s.size(); ++k) index[f].emplace(s.id[k], k);
+    for (std::size_t k = 0; k < s.size(); ++k)
+      if (const auto [it, inserted] = index[f].emplace(s.id[k], k); !inserted)
+        throw InputError(fmt::format("{}: particle id {} appears twice (particles {} and {}): the analysis follows "
+                                     "each particle by its id, which must be unique",
+                                     frames[f].label, s.id[k], it->second, k));
   }
   std::vector<std::size_t> matched;  // indices into the reference
   for (std::size_t k = 0; k < ref.size(); ++k) {
@@ -101,6 +141,7 @@ AnalysisResult analyze_frames(const std::vector<AnalysisFrame>& frames, const Sp
     for (std::size_t f = 1; f < frames.size() && everywhere; ++f) everywhere = index[f].count(ref.id[k]) > 0;
     if (everywhere) matched.push_back(k);
   }
+  r.unmatched_ids = unmatched_id_warnings(frames, index);
   r.matched_particles = matched.size();
   if (matched.size() < 3) {
     throw InputError(fmt::format("only {} particles appear in both {} and {} (matched by id)", matched.size(),

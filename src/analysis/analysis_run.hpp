@@ -79,6 +79,9 @@ struct AnalysisResult {
   double trapdoor_travel() const { return at_displacement - reference_displacement; }
 
   std::size_t matched_particles = 0;  // in every snapshot used
+  // Particles left out because their id is not in every snapshot used: what is missing where,
+  // with the first ids (metrics.json `warnings`, the terminal); empty when all match.
+  std::vector<std::string> unmatched_ids;
   double mean_diameter = 0.0;         // m, of the viewed particles
   double max_diameter = 0.0;          // m, of all matched particles
 
