@@ -9,6 +9,7 @@
 
 #include "core/errors.hpp"
 #include "experiment/centrifuge_frame.hpp"
+#include "experiment/deposit_surface.hpp"
 #include "experiment/strongbox.hpp"
 
 namespace trapdem {
@@ -204,9 +205,12 @@ bool TrapdoorExperiment::advance(ExperimentObserver& observer) {
           notes += fmt::format("; the box is full: the deposit reached the hopper band's ceiling ({:.1f} mm) with {} "
                                "of the {} particles asked for poured, and the pour ends there",
                                hopper_.band_ceiling() * 1e3, hopper_.inserted(), config_.pluviation.count);
-        observer.stage_finished(stage_, fmt::format("{} particles poured ({:.4g} kg), surface at about {:.1f} mm{}",
+        observer.stage_finished(stage_, fmt::format("{} particles poured ({:.4g} kg), nominal surface {:.1f} mm (the "
+                                                    "mass at solid fraction {:g}; the deposit's is measured when it "
+                                                    "has settled){}",
                                                     hopper_.inserted(), hopper_.inserted_mass(),
-                                                    hopper_.surface_height() * 1e3, notes));
+                                                    hopper_.surface_height() * 1e3,
+                                                    config_.pluviation.packing_fraction, notes));
         observer.snapshot_due(stage_name(stage_));
         start_stage(Stage::settling);
       }
@@ -217,9 +221,10 @@ bool TrapdoorExperiment::advance(ExperimentObserver& observer) {
       if (sim_->step_count() % kCheckEvery != 0) return true;
       const bool calm = settled(last_energy_ratio_);
       if ((calm && t >= config_.settling.min_time) || t >= config_.settling.max_time) {
-        observer.stage_finished(stage_, fmt::format("kinetic/potential energy {:.3g} after {:.4g} s{}",
-                                                    last_energy_ratio_, t,
-                                                    calm ? "" : " (max_time reached before the energy criterion)"));
+        observer.stage_finished(
+            stage_, fmt::format("kinetic/potential energy {:.3g} after {:.4g} s{}; {}", last_energy_ratio_, t,
+                                calm ? "" : " (max_time reached before the energy criterion)",
+                                deposit_surface_text(measure_deposit_surface(*sim_, config_, decomposition_), config_)));
         observer.snapshot_due(stage_name(stage_));
         start_stage(Stage::spin_up);
       }

@@ -17,7 +17,7 @@ using namespace trapdem;
 
 namespace {
 
-// The tiny preset (80 x 14 x 45 mm box, beads of 3.6-4.4 mm) poured by count, with no flow rate:
+// The tiny preset (80 x 14 x 60 mm box, beads of 3.6-4.4 mm) poured by count, with no flow rate:
 // every free site of the band takes a particle at each insertion.
 ExperimentConfig counted_pour() {
   Config c = Config::load_file(std::string(TRAPDEM_SOURCE_DIR) + "/presets/tiny.toml");

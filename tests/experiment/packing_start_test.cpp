@@ -39,7 +39,7 @@ fs::path fresh_dir(const std::string& name) {
   return dir;
 }
 
-// The tiny preset's box (80 x 14 x 45 mm) filled with a simple cubic lattice of 4 mm spheres 4.4 mm
+// The tiny preset's box (80 x 14 x 60 mm) filled with a simple cubic lattice of 4 mm spheres 4.4 mm
 // apart: 18 x 3 x `layers`, ids 101, 102, ... (not 1..N: the ids must be kept, not renumbered).
 Particles lattice(int layers, double density = 2500.0) {
   Particles p;
@@ -191,7 +191,7 @@ TEST(PackingStart, EachCheckNamesTheParticleAndLine) {
   EXPECT_NE(error_for(p).find("below the base"), std::string::npos);
   // The same particle inside with a shift, and the shift alone can put it out.
   EXPECT_EQ(error_for(p, {"packing.shift=[0.0, 0.0, 0.001]"}), "(no error)");
-  EXPECT_NE(error_for(lattice(1), {"packing.shift=[0.0, 0.0, 0.05]"}).find("above the box"), std::string::npos);
+  EXPECT_NE(error_for(lattice(1), {"packing.shift=[0.0, 0.0, 0.06]"}).find("above the box"), std::string::npos);
 
   p = lattice(1);
   p.position[11] = p.position[10] + Vec3{0.003, 0.0, 0.0};  // ids 111 and 112 overlap by 1 mm = 0.5 r
@@ -400,5 +400,49 @@ TEST(PackingStart, RelativeFromIsTheConfigurationFilesFolder) {
   const WorkingFolder elsewhere(dir);
   Config again = Config::load_file((dir / "run" / "resolved.toml").string());
   EXPECT_EQ(ExperimentConfig::from(again).packing.particles->size(), beside.size());
+  fs::remove_all(dir);
+}
+
+// docs/output.md's example as written (issue 41): the tiny preset's own settled deposit (snapshot 1
+// of a whole tiny pour and settling) starts a tiny run. The settling's line in run.log measures the
+// deposit's surface and its highest top, which stay inside the box; in a box lower than the
+// deposit the same line says how many particles stand above it and what box a run from it needs.
+TEST(PackingStart, TheDocsExampleStartsFromTheTinyPresetsOwnDeposit) {
+  omp_set_num_threads(1);
+  const fs::path dir = fresh_dir("docs-example");
+  FolderRunOptions poured;
+  poured.config_file = kTiny;
+  poured.overrides = {"spin_up.ramp_time=0.005", "trapdoor.travel=0.0005", "output.snapshot_displacements=[0.0]"};
+  poured.out_dir = dir / "tiny";
+  poured.quiet = true;
+  poured.threads = 1;
+  ASSERT_TRUE(run_in_folder(poured));
+  const std::string log = read_text_file(dir / "tiny" / "run.log");
+  const auto settled = log.find("stage settling finished");
+  ASSERT_NE(settled, std::string::npos) << log;
+  const std::string line = log.substr(settled, log.find('\n', settled) - settled);
+  EXPECT_NE(line.find("deposit surface at "), std::string::npos) << line;
+  EXPECT_EQ(line.find("above the box"), std::string::npos) << line;
+  const auto snaps = read_snapshots(dir / "tiny" / "snapshots.h5");
+  double highest = 0.0;
+  for (std::size_t i = 0; i < snaps[1].size(); ++i)
+    highest = std::max(highest, snaps[1].position[i].z + snaps[1].radius[i]);
+  EXPECT_LT(highest, config_with({}).box.height);
+
+  FolderRunOptions from_deposit = poured;
+  from_deposit.overrides = {"packing.from=" + (dir / "tiny").string(), "packing.format=trapdem", "packing.snapshot=1",
+                            "spin_up.ramp_time=0.005", "trapdoor.travel=0.0005", "output.snapshot_displacements=[0.0]"};
+  from_deposit.out_dir = dir / "from-deposit";
+  ASSERT_TRUE(run_in_folder(from_deposit));
+
+  // The same pour in a box 15 mm lower: said where the deposit is measured.
+  FolderRunOptions low = poured;
+  low.overrides.push_back("box.height=0.045");
+  low.out_dir = dir / "low";
+  ASSERT_TRUE(run_in_folder(low));
+  const std::string low_log = read_text_file(dir / "low" / "run.log");
+  EXPECT_NE(low_log.find("stand above the box's height (45.0 mm): a run started from this deposit needs box.height >="),
+            std::string::npos)
+      << low_log;
   fs::remove_all(dir);
 }
