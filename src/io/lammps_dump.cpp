@@ -202,6 +202,11 @@ Snapshot parse_dump(const std::string& text, const std::string& source) {
 }
 
 DumpAtoms read_dump_atoms(const std::filesystem::path& path) {
+  // A dump that is not there is a wrong name given (an input error, exit 2); one that is there
+  // and cannot be read, a file error (4): the exit-code contract (README.md).
+  std::error_code ec;
+  if (!std::filesystem::exists(path, ec)) throw InputError(path.string() + ": no such dump file");
+  if (std::filesystem::is_directory(path, ec)) throw InputError(path.string() + ": a folder, not a dump file");
   std::ifstream file(path, std::ios::binary);
   if (!file) throw FileError(path.string() + ": cannot open the dump file");
   std::ostringstream text;
