@@ -203,8 +203,13 @@ bool TrapdoorExperiment::advance(ExperimentObserver& observer) {
         if (hopper_.flow_limited_by_band()) notes += "; the flow rate asked for exceeded what the hopper band passes";
         if (hopper_.box_full())
           notes += fmt::format("; the box is full: the deposit reached the hopper band's ceiling ({:.1f} mm) with {} "
-                               "of the {} particles asked for poured, and the pour ends there",
-                               hopper_.band_ceiling() * 1e3, hopper_.inserted(), config_.pluviation.count);
+                               "{}, and the pour ends there",
+                               hopper_.band_ceiling() * 1e3, hopper_.inserted(),
+                               config_.pluviation.count > 0
+                                   ? fmt::format("of the {} particles asked for poured", config_.pluviation.count)
+                                   : fmt::format("particles poured, before the nominal surface reached the fill "
+                                                 "height ({:.1f} mm)",
+                                                 config_.pluviation.fill_height * 1e3));
         observer.stage_finished(stage_, fmt::format("{} particles poured ({:.4g} kg), nominal surface {:.1f} mm (the "
                                                     "mass at solid fraction {:g}; the deposit's is measured when it "
                                                     "has settled){}",

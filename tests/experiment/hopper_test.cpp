@@ -9,6 +9,8 @@
 #include <memory>
 #include <string>
 
+#include "../io/io_test_support.hpp"
+#include "experiment/folder_run.hpp"
 #include "experiment/pluviation.hpp"
 #include "experiment/strongbox.hpp"
 #include "io/config.hpp"
@@ -110,4 +112,27 @@ TEST(Hopper, ADepositBelowTheRimGoesOnPouring) {
   pour_for(hopper, *sim, 3, insertion_interval(c, hopper));
   EXPECT_FALSE(hopper.box_full());
   EXPECT_GT(hopper.inserted(), 0);
+}
+
+// A pour by fill height in a box too low for it ends at the band's ceiling, and run.log says so
+// without naming a count that was never asked for (it named "of the 0 particles asked for").
+TEST(Hopper, ABoxFullBeforeTheFillHeightIsSaidSo) {
+  omp_set_num_threads(1);
+  const io_testing::ScratchDir scratch("trapdem-hopper-full");
+  FolderRunOptions o;
+  o.config_file = std::string(TRAPDEM_SOURCE_DIR) + "/presets/tiny.toml";
+  // At a nominal solid fraction of 0.75 the poured mass reaches 30 mm long after the real deposit (a
+  // solid fraction below 0.6) has filled the box.
+  o.overrides = {"box.height=0.03", "pluviation.fill_height=0.03", "pluviation.packing_fraction=0.75", "settling.max_time=0.01",
+                 "spin_up.ramp_time=0.005", "trapdoor.travel=0.0005", "output.snapshot_displacements=[0.0]"};
+  o.out_dir = scratch / "run";
+  o.quiet = true;
+  o.threads = 1;
+  ASSERT_TRUE(run_in_folder(o));
+  const std::string log = io_testing::read_all(scratch / "run" / "run.log");
+  EXPECT_NE(log.find("particles poured, before the nominal surface reached the fill height (30.0 mm), and the pour "
+                     "ends there"),
+            std::string::npos)
+      << log;
+  EXPECT_EQ(log.find("of the 0 particles"), std::string::npos) << log;
 }
