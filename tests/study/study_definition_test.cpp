@@ -194,7 +194,7 @@ TEST(StudyDefinition, TheSeedLawStudyIsThePaperStudyWithBlazeDemsLaw) {
       EXPECT_EQ(c.require_value_text("contact.damping_model"), "\"restitution_blaze\"") << scale.name;
       // The step the seed's k_n implies, but at the scale run at a ten times longer one.
       EXPECT_DOUBLE_EQ(c.get_double("contact.reference_time_step", 0.0),
-                       scale.name == "demo-dtref2e-8" ? 2.0e-8 : 2.0e-9)
+                       scale.name.starts_with("demo-dtref2e-8") ? 2.0e-8 : 2.0e-9)
           << scale.name;
     }
     Config blaze =
