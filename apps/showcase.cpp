@@ -10,12 +10,13 @@
 #include <fmt/format.h>
 
 #include "dem/packing.hpp"
+#include "dem/thread_scope.hpp"
 #include "dem/simulation.hpp"
 
 namespace trapdem::app {
 
 int run_showcase(const ShowcaseOptions& o) {
-  if (o.threads > 0) omp_set_num_threads(o.threads);
+  const ThreadScope threads(o.threads);
   const double width = 0.1, depth = 0.0182, height = 0.3;  // m, a slab like the paper's strongbox
   LatticeSpec spec;
   spec.lower = {0, 0, 0};

@@ -17,6 +17,7 @@
 #include "core/errors.hpp"
 #include "core/host_load.hpp"
 #include "core/wait_policy.hpp"
+#include "dem/thread_scope.hpp"
 #include "core/nearest_name.hpp"
 #include "core/thread_count.hpp"
 #include "experiment/run_folder.hpp"
@@ -284,8 +285,7 @@ bool run_logged(const FolderRunOptions& o, std::optional<RunLog>& log) {
     check_allowed_changes_are_keys(o, configuration);
   });
   const ExperimentConfig& experiment_config = *read;
-  const int threads = o.threads > 0 ? o.threads : experiment_config.numerics.threads;
-  if (threads > 0) omp_set_num_threads(threads);
+  const ThreadScope threads(o.threads > 0 ? o.threads : experiment_config.numerics.threads);
   if (restart) resume = false;
   if (!resume && o.resume_dir.empty())
     out = o.out_dir.empty() ? fs::path("trapdem-out") / experiment_config.name : o.out_dir;

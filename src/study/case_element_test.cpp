@@ -7,6 +7,7 @@
 #include <fmt/format.h>
 
 #include "core/errors.hpp"
+#include "dem/thread_scope.hpp"
 #include "core/json.hpp"
 #include "experiment/element_output.hpp"
 #include "experiment/element_test.hpp"
@@ -59,17 +60,11 @@ void run_case_element_test(const CaseElementTest& test, const fs::path& dir, int
     log_file << line << '\n';
     log_file.flush();
   };
-  const int before = omp_get_max_threads();
-  const int wanted = threads > 0 ? threads : test.setup.threads;
-  if (wanted > 0) omp_set_num_threads(wanted);
-  try {
+  {
+    const ThreadScope scope(threads > 0 ? threads : test.setup.threads);
     const ElementResult result = run_element_test(test.setup, log);
     write_element_files(dir, result);
-  } catch (...) {
-    omp_set_num_threads(before);
-    throw;
   }
-  omp_set_num_threads(before);
   // Last: its presence with element.json marks the test finished for this configuration.
   write_text_atomically(element_resolved_file(dir), test.resolved);
 }

@@ -71,5 +71,6 @@ TEST(DumpReader, BadInputNamesFileAndLine) {
   EXPECT_EQ(error_of("ITEM: TIMESTEP\nabc\n"), "run.dump:2: timestep: 'abc' is not a number");
   EXPECT_EQ(error_of("hello\n"), "run.dump:1: expected an 'ITEM:' line, found 'hello'");
   EXPECT_EQ(error_of("ITEM: TIMESTEP\n1\n"), "run.dump: no ITEM: ATOMS section (not a LAMMPS/LIGGGHTS text dump?)");
-  EXPECT_THROW(read_dump_file("/nonexistent/run.dump"), FileError);
+  // Not there: a wrong name given, an input error (exit 2); there but unreadable: a file error.
+  EXPECT_THROW(read_dump_file("/nonexistent/run.dump"), InputError);
 }
