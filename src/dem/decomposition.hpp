@@ -4,7 +4,7 @@
 // [0, owned_count())) followed by ghosts, copies of other ranks' particles within the interaction
 // range of the sub-domain. The engine's loops, contact law and lists are the same on every rank;
 // this interface moves particles, ghosts, forces and sums between the ranks at fixed points of
-// the step (Simulation::step_decomposed, decomposed_step.cpp). It names no message-passing
+// the step (Simulation::step, simulation.cpp, with the exchanges of halo.cpp). It names no message-passing
 // library: the MPI implementation is src/parallel (SlabDecomposition). Without one attached the
 // engine runs as a single process and calls none of this.
 //

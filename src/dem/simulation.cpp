@@ -148,25 +148,32 @@ void Simulation::run(std::int64_t steps) {
   for (std::int64_t s = 0; s < steps; ++s) step();
 }
 
-// One time step: velocity Verlet as LAMMPS's nve/sphere does it (half kick, drift, forces at the
-// new positions with the half-step velocities, half kick). Second order in dt for conservative
-// forces; the dashpot sees velocities half a step old, which is first order and standard in DEM.
+// One time step, for one process and for a rank of a decomposition alike: velocity Verlet as
+// LAMMPS's nve/sphere does it (half kick, drift, forces at the new positions with the half-step
+// velocities, half kick). Second order in dt for conservative forces; the dashpot sees velocities
+// half a step old, which is first order and standard in DEM. The exchanges of a decomposition
+// (halo.cpp) sit between the parts and do nothing on one process.
 void Simulation::step() {
-  if (decomposition_) {
-    step_decomposed();
-    return;
-  }
+  // The fused kick: the second half kick inside the contact sweep, as soon as a particle's force is
+  // complete (contact_sweep.cpp). Not on ranks (a force is complete only once the ghosts' shares
+  // are back) nor in a rotating frame (its kick needs the positions after the sweep).
+  const bool fused_kick = !decomposition_ && !frame_;
   if (!setup_done_) {  // forces of the initial state, so the first half kick sees them
-    rebuild_lists();
-    contacts(false);
+    rebuild_lists_agreed();
+    forces(false);
     setup_done_ = true;
   }
-  integrate_positions();
-  update_neighbours_if_needed();
-  contacts(!frame_);  // with the second half kick, unless it is the frame's (after the sweep)
-  if (frame_) bad_particle_ = kick_owned() ? first_non_finite_particle() : -1;
+  integrate_positions();  // first half kick and drift
+  switch (agree_on_next_lists()) {
+    case NextLists::stop: check_stability_agreed(); break;  // throws: stop before the particle would migrate
+    case NextLists::rebuild: rebuild_lists_agreed(); break;
+    case NextLists::keep: update_ghosts(); break;
+  }
+  forces(fused_kick);
+  if (!fused_kick) bad_particle_ = kick_owned() ? first_non_finite_particle() : -1;  // second half kick
+  stats_.ghost_steps += std::int64_t(ghosts_);
   ++stats_.steps;
-  check_stability();
+  check_stability_agreed();
 }
 
 void Simulation::find_particles_near_walls() {
@@ -244,10 +251,6 @@ bool Simulation::lists_outdated() const {
   for (std::size_t k = 0; k < walls_.size() && !rebuild; ++k)
     rebuild = norm2(walls_[k].displacement - wall_displacement_at_build_[k]) > limit * limit;
   return rebuild;
-}
-
-void Simulation::update_neighbours_if_needed() {
-  if (lists_outdated()) rebuild_lists();
 }
 
 void Simulation::rebuild_lists() {

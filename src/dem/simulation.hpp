@@ -149,8 +149,14 @@ class Simulation {
  private:
   void integrate_positions();
   bool lists_outdated() const;
-  void update_neighbours_if_needed();
-  void step_decomposed();        // decomposed_step.cpp
+  // The step's parts that cross a sub-domain boundary (halo.cpp): each does nothing more than the
+  // one-process work without a decomposition.
+  enum class NextLists { keep, rebuild, stop };
+  NextLists agree_on_next_lists();     // stop: a particle escaped on some rank
+  void rebuild_lists_agreed();         // a failure on one rank thrown on every rank
+  void update_ghosts();                // the ghosts' positions and velocities from their owners
+  void forces(bool fused_kick);        // the sweep, then the ghosts' shares and the wall loads summed
+  void check_stability_agreed();       // every rank throws the first failure, or none
   void drop_ghosts();            // their histories kept for the next rebuild
   int kick_owned();              // the second half kick of the owned particles (decomposed_step.cpp)
   SecondHalfKick second_half_kick();  // this step's, for kick_owned and the fused sweep
