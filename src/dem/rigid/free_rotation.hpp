@@ -1,0 +1,24 @@
+#pragma once
+// The rotation of a rigid body over a time step, by the symmetric splitting of the free rotor into
+// rotations about its principal axes: NO_SQUISH (Miller, Eleftheriou, Pattnaik, Ndirango, Newns &
+// Martyna 2002, J. Chem. Phys. 116, 8649, eq. 2.16; the scheme of LAMMPS's fix rigid/nve and
+// rigid/small). With the angular momentum kicked by the torque in the space frame for half a step
+// before and after (as the translation's velocity Verlet), the step is second order, time-reversible
+// and symplectic: each sub-rotation keeps the space-frame angular momentum exactly (and the
+// quaternion's norm, renormalised against round-off), and the energy's error stays bounded, of
+// order dt^2, without drift.
+#include "dem/rigid/quaternion.hpp"
+#include "dem/vec3.hpp"
+
+namespace trapdem {
+
+// The free rotation of a body with principal moments `inertia` (kg m^2, the body frame's axes
+// principal) over `dt` (s): its orientation `q` and its angular momentum in the body frame
+// `momentum_body` (kg m^2/s) are advanced by R3(dt/2) R2(dt/2) R1(dt) R2(dt/2) R3(dt/2), R_k(h) the
+// exact rotation about body axis k at angular velocity L_k / I_k for a time h.
+void rotate_freely(Quaternion& q, Vec3& momentum_body, const Vec3& inertia, double dt);
+
+// The body's angular velocity in the space frame from its angular momentum in the body frame.
+Vec3 angular_velocity_space(const Quaternion& q, const Vec3& momentum_body, const Vec3& inertia);
+
+}  // namespace trapdem
