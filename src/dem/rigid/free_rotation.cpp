@@ -22,7 +22,7 @@ void rotate_about_body_axis(int k, Quaternion& q, Vec3& L, const Vec3& inertia, 
 }  // namespace
 
 void rotate_freely(Quaternion& q, Vec3& momentum_body, const Vec3& inertia, double dt) {
-  // Miller et al. (2002), eq. 2.16: the symmetric splitting with the largest-index axis outermost.
+  // Miller et al. (2002): the symmetric splitting, the third axis outermost.
   rotate_about_body_axis(2, q, momentum_body, inertia, 0.5 * dt);
   rotate_about_body_axis(1, q, momentum_body, inertia, 0.5 * dt);
   rotate_about_body_axis(0, q, momentum_body, inertia, dt);

@@ -1,8 +1,8 @@
 #pragma once
 // The rotation of a rigid body over a time step, by the symmetric splitting of the free rotor into
 // rotations about its principal axes: NO_SQUISH (Miller, Eleftheriou, Pattnaik, Ndirango, Newns &
-// Martyna 2002, J. Chem. Phys. 116, 8649, eq. 2.16; the scheme of LAMMPS's fix rigid/nve and
-// rigid/small). With the angular momentum kicked by the torque in the space frame for half a step
+// Martyna 2002, "Symplectic quaternion scheme for biophysical molecular dynamics", J. Chem. Phys.
+// 116, 8649). With the angular momentum kicked by the torque in the space frame for half a step
 // before and after (as the translation's velocity Verlet), the step is second order, time-reversible
 // and symplectic: each sub-rotation keeps the space-frame angular momentum exactly (and the
 // quaternion's norm, renormalised against round-off), and the energy's error stays bounded, of
