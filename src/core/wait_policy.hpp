@@ -8,11 +8,14 @@
 
 namespace trapdem {
 
-// Called first in main(argc, argv). When OMP_WAIT_POLICY is not set and the threads this process
+// Called first in main(argc, argv). For a command that runs the engine (run, study, element,
+// calibrate, showcase): when OMP_WAIT_POLICY is not set and the threads this process
 // will use (--threads N in argv; without it every usable core) x its ranks on this host
 // (OMPI_COMM_WORLD_LOCAL_SIZE) plus the other registered trapdem runs' threads exceed the host's
 // cores, or its threads its own usable cores (HostLoad::oversubscribed, host_load.hpp), sets OMP_WAIT_POLICY=passive and OMPI_MCA_mpi_yield_when_idle=1 and
-// re-executes the program with the same arguments (once). Returns when it does not re-execute
+// re-executes the program with the same arguments (once). The process is registered in the
+// host's run registry from here on (as "starting", until its run registers itself with its
+// thread count), so that two runs started together see each other. Returns when it does not re-execute
 // (not crowded, the policy set by hand, or the exec failed: the run then goes on as it was).
 void wait_passively_when_crowded(int argc, char** argv);
 

@@ -193,6 +193,32 @@ TEST(HostLoad, RunBesideAnotherWarnsAndWaitsPassively) {
   EXPECT_NE(log.find("oversubscribed", terminal), std::string::npos) << log;
 }
 
+// Two runs started at the same moment, each with as many threads as this process has cores: the
+// later to register sees the earlier, so at least one warns and waits passively (both, unless one
+// registered and read the registry before the other registered).
+TEST(HostLoad, TwoRunsStartedTogetherSeeEachOther) {
+  const PrivateRegistry registry;
+  io_testing::ScratchDir scratch("trapdem-host-load-pair");
+  const int cores = usable_cores().count;
+  const auto command = [&](const std::string& name) {
+    return fmt::format("env -u OMP_WAIT_POLICY TRAPDEM_RUN_REGISTRY='{}' '{}' run --preset tiny --out '{}' --threads {} "
+                       "--quiet --set pluviation.fill_height=0.01 --set settling.max_time=0.01 --set "
+                       "spin_up.ramp_time=0.005 --set trapdoor.travel=0.0005 --set 'output.snapshot_displacements=[0.0]' "
+                       "> /dev/null 2>&1",
+                       registry.dir().string(), TRAPDEM_EXECUTABLE, (scratch / name).string(), cores);
+  };
+  const std::string both = "(" + command("a") + ") & (" + command("b") + ") & wait";
+  ASSERT_EQ(std::system(("bash -c \"" + both + "\"").c_str()), 0);
+  int warned = 0;
+  for (const char* name : {"a", "b"}) {
+    const std::string log = io_testing::read_all(scratch / name / "run.log");
+    if (log.find("oversubscribed") == std::string::npos) continue;
+    ++warned;
+    EXPECT_NE(log.find("wait passively"), std::string::npos) << log;
+  }
+  EXPECT_GE(warned, 1);
+}
+
 // OMP_WAIT_POLICY set by hand is kept, and the warning says what it costs.
 TEST(HostLoad, RunBesideAnotherKeepsAWaitPolicySetByHand) {
   const std::string log = run_log_beside_a_crowd("active");
