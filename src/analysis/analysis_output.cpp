@@ -135,9 +135,17 @@ Json metrics_json(const AnalysisResult& r) {
   Json strain = Json::object();
   strain.set("sign_convention", "compression positive; gamma_max engineering shear");
   strain.set("gamma_max_median", quantile(r.gamma_max, 0.5));
+  strain.set("gamma_max_p25", quantile(r.gamma_max, 0.25));
+  strain.set("gamma_max_p75", quantile(r.gamma_max, 0.75));
+  strain.set("gamma_max_p90", quantile(r.gamma_max, 0.90));
   strain.set("gamma_max_p95", quantile(r.gamma_max, 0.95));
+  strain.set("gamma_max_p99", quantile(r.gamma_max, 0.99));
   strain.set("gamma_max_max", quantile(r.gamma_max, 1.0));
   strain.set("volumetric_median", quantile(r.volumetric, 0.5));
+  strain.set("percentiles", "over the kept triangles, each counted once (not area-weighted)");
+  strain.set("volumetric_beside_left_wall", r.volumetric_beside_left_wall);
+  strain.set("volumetric_beside_right_wall", r.volumetric_beside_right_wall);
+  strain.set("beside_wall", "area-weighted mean over the kept triangles within one trapdoor width of the side wall's outermost particles");
   if (r.has_incremental) {
     strain.set("gamma_max_incremental_p95", quantile(r.gamma_max_incremental, 0.95));
     strain.set("gamma_max_incremental_max", quantile(r.gamma_max_incremental, 1.0));
@@ -171,6 +179,18 @@ Json metrics_json(const AnalysisResult& r) {
   zone.set("widths", widths);
   zone.set("mid_height_width_m", r.zone.mid_height_width);
   zone.set("shape_ratio", r.zone.shape_ratio);
+  Json at_fractions = Json::array();
+  for (std::size_t k = 0; k < r.zone_at_fractions.size(); ++k) {
+    const ZoneOfInfluence& z = r.zone_at_fractions[k];
+    Json one = Json::object();
+    one.set("settlement_fraction", kZoneFractions[k]);
+    one.set("threshold_m", z.threshold);
+    one.set("surface_width_m", z.surface_width);
+    one.set("mid_height_width_m", z.mid_height_width);
+    one.set("shape_ratio", z.shape_ratio);
+    at_fractions.push_back(one);
+  }
+  zone.set("at_higher_thresholds", at_fractions);
   zone.set("shape", !std::isfinite(r.zone.shape_ratio) ? "unknown"
                     : r.zone.shape_ratio < 1.3                 ? "columnar"
                                                                : "elliptical");

@@ -208,6 +208,28 @@ AnalysisResult analyze_frames(const std::vector<AnalysisFrame>& frames, const Sp
   settings.zone.mean_diameter = r.mean_diameter;
   settings.zone.trapdoor_displacement = r.trapdoor_travel();
   r.zone = zone_of_influence(r.points, geometry.trapdoor, settings.zone);
+  for (const double fraction : kZoneFractions) {
+    ZoneOfInfluenceSettings at = settings.zone;
+    at.settlement_fraction = fraction;
+    r.zone_at_fractions.push_back(zone_of_influence(r.points, geometry.trapdoor, at));
+  }
+  // Beside the walls: the triangles whose centroid lies within B of the outermost particles.
+  const std::vector<Point2> centroids = triangle_centroids(r.mesh.mesh, r.points.position);
+  const std::vector<double> areas = triangle_areas(r.mesh.mesh, r.points.position);
+  double left_sum = 0.0, left_area = 0.0, right_sum = 0.0, right_area = 0.0;
+  const double B = geometry.trapdoor.width;
+  for (std::size_t t = 0; t < centroids.size(); ++t) {
+    if (!std::isfinite(r.volumetric[t])) continue;
+    if (centroids[t].x <= r.zone.wall_left_x + B) {
+      left_sum += r.volumetric[t] * areas[t];
+      left_area += areas[t];
+    } else if (centroids[t].x >= r.zone.wall_right_x - B) {
+      right_sum += r.volumetric[t] * areas[t];
+      right_area += areas[t];
+    }
+  }
+  if (left_area > 0.0) r.volumetric_beside_left_wall = left_sum / left_area;
+  if (right_area > 0.0) r.volumetric_beside_right_wall = right_sum / right_area;
   r.settings = settings;
   return r;
 }

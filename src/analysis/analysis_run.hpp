@@ -107,7 +107,18 @@ struct AnalysisResult {
   std::vector<double> gamma_max_smoothed;
   ShearBandPair bands;
   ZoneOfInfluence zone;
+  // The zone at higher thresholds (10, 25 and 50 % of the travel): how its width depends on the
+  // threshold (a referee's first question of a 5 % zone; issue 36).
+  std::vector<ZoneOfInfluence> zone_at_fractions;
+  // The far field: the mean volumetric strain (area-weighted, compression positive) of the kept
+  // triangles within one trapdoor width of each side wall's outermost particles: near zero when
+  // only the mechanism over the door moves, not when the whole deposit compacts.
+  double volumetric_beside_left_wall = std::numeric_limits<double>::quiet_NaN();
+  double volumetric_beside_right_wall = std::numeric_limits<double>::quiet_NaN();
 };
+
+// The thresholds of AnalysisResult::zone_at_fractions.
+inline constexpr double kZoneFractions[] = {0.10, 0.25, 0.50};
 
 // The analysis of a sequence of frames: frames[0] the reference, frames.back() the current one,
 // any in between used for the incremental strain (when settings.incremental).

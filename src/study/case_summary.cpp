@@ -46,6 +46,16 @@ void read_mechanism_metrics(const Json& m, CaseSummary& s) {
   s.zone_surface = json_number_or_nan(zone, "surface_width_m");
   s.zone_mid_height = json_number_or_nan(zone, "mid_height_width_m");
   s.shape_ratio = json_number_or_nan(zone, "shape_ratio");
+  const Json& higher = json_member_or_null(zone, "at_higher_thresholds");
+  for (std::size_t k = 0; higher.type() == Json::Type::array && k < higher.size(); ++k)
+    if (json_number_or_nan(higher[k], "settlement_fraction") == 0.25) {
+      s.zone_surface_25 = json_number_or_nan(higher[k], "surface_width_m");
+      s.zone_mid_height_25 = json_number_or_nan(higher[k], "mid_height_width_m");
+    }
+  const Json& strain = json_member_or_null(m, "strain");
+  s.gamma_max_p90 = json_number_or_nan(strain, "gamma_max_p90");
+  s.volumetric_beside_walls = mean_of_found(json_number_or_nan(strain, "volumetric_beside_left_wall"),
+                                            json_number_or_nan(strain, "volumetric_beside_right_wall"));
   const Json& shape = json_member_or_null(zone, "shape");
   s.shape = shape.type() == Json::Type::string ? shape.as_string() : "";
 
@@ -71,6 +81,10 @@ const std::vector<SummaryMetric>& summary_metrics() {
       {"zone_surface_m", &CaseSummary::zone_surface},
       {"zone_mid_height_m", &CaseSummary::zone_mid_height},
       {"shape_ratio", &CaseSummary::shape_ratio},
+      {"zone_surface_25pct_m", &CaseSummary::zone_surface_25},
+      {"zone_mid_height_25pct_m", &CaseSummary::zone_mid_height_25},
+      {"gamma_max_p90", &CaseSummary::gamma_max_p90},
+      {"volumetric_strain_beside_walls", &CaseSummary::volumetric_beside_walls},
       {"min_load_ratio", &CaseSummary::min_load_ratio},
       {"min_load_at_over_B", &CaseSummary::min_load_at_over_b},
       {"final_load_ratio", &CaseSummary::final_load_ratio},

@@ -42,6 +42,10 @@ struct CaseSummary {
   double zone_surface = kMissing;      // m
   double zone_mid_height = kMissing;   // m
   double shape_ratio = kMissing;       // zone width at mid-height / B (~1 columnar, > 1.3 elliptical)
+  double zone_surface_25 = kMissing;     // m, the zone at 25 % of the travel, at the surface
+  double zone_mid_height_25 = kMissing;  // m, and at mid-height
+  double gamma_max_p90 = kMissing;       // the 90th percentile of the total gamma_max over the triangles
+  double volumetric_beside_walls = kMissing;  // the far field's volumetric strain, both walls' mean
   std::string shape;                   // "elliptical", "chimney", ... as the analysis calls it
   // Ground reaction curve: the trapdoor's stress over its value before lowering.
   double min_load_ratio = kMissing;    // the least (maximum arching)
