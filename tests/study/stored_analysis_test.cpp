@@ -29,7 +29,7 @@ struct Inputs {
   std::string smoothing_diameters = "2";
 };
 
-// The run folder, a scratch folder of its own.
+// The run folder, made by hand in a scratch folder of its own (removed with the value returned).
 ScratchDir run_folder(const Inputs& in) {
   ScratchDir dir("trapdem-stored-analysis");
   fs::create_directories(dir / "analysis");
