@@ -8,6 +8,7 @@
 
 #include "analysis/analysis_run.hpp"
 #include "core/errors.hpp"
+#include "../scratch_dir.hpp"
 
 using namespace trapdem;
 
@@ -15,9 +16,7 @@ using namespace trapdem;
 // uniformly with the trapdoor's 1 mm: no strain, the matched count is every particle.
 TEST(DumpReader, FeedsTheAnalysis) {
   namespace fs = std::filesystem;
-  const fs::path dir = fs::temp_directory_path() / "trapdem-dump-analysis";
-  fs::remove_all(dir);
-  fs::create_directories(dir);
+  const test::ScratchDir dir("trapdem-dump-analysis");
   std::vector<fs::path> files;
   for (int f = 0; f < 2; ++f) {
     files.push_back(dir / ("dump." + std::to_string(f)));

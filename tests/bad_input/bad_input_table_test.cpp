@@ -12,13 +12,13 @@
 // path that does not exist, {SNAPRUN} a folder holding only a snapshots.h5 of {DUMP0}'s bed.
 #include <gtest/gtest.h>
 #include <sys/wait.h>
-#include <unistd.h>
 
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
 #include <iterator>
 #include <map>
+#include <optional>
 #include <sstream>
 #include <string>
 #include <vector>
@@ -27,6 +27,7 @@
 
 #include "experiment/folder_run.hpp"
 #include "io/snapshot.hpp"
+#include "../scratch_dir.hpp"
 
 namespace trapdem {
 namespace {
@@ -205,12 +206,12 @@ const std::vector<BadInput>& table() {
 
 class BadInputTable : public ::testing::TestWithParam<BadInput> {
  protected:
+  static std::optional<test::ScratchDir> scratch_;
   static fs::path root_;
   static std::map<std::string, std::string> places_;
 
   static void SetUpTestSuite() {
-    root_ = fs::temp_directory_path() / fmt::format("trapdem-bad-input-{}", ::getpid());
-    fs::remove_all(root_);
+    root_ = scratch_.emplace("trapdem-bad-input").path();
     fs::create_directories(root_ / "empty");
     places_["{TINY}"] = (fs::path(TRAPDEM_SOURCE_DIR) / "presets" / "tiny.toml").string();
     places_["{EMPTY}"] = (root_ / "empty").string();
@@ -265,9 +266,10 @@ class BadInputTable : public ::testing::TestWithParam<BadInput> {
     places_["{IMG1}"] = (root_ / "img" / "image_001.png").string();
     places_["{IMG2}"] = (root_ / "img" / "image_002.png").string();
   }
-  static void TearDownTestSuite() { fs::remove_all(root_); }
+  static void TearDownTestSuite() { scratch_.reset(); }
 };
 
+std::optional<test::ScratchDir> BadInputTable::scratch_;
 fs::path BadInputTable::root_;
 std::map<std::string, std::string> BadInputTable::places_;
 

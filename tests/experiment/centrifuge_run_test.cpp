@@ -3,7 +3,6 @@
 // resumed each time, ends bit for bit where the run straight through ends (the frame and its ramp
 // are set again on a resume); the frame's configuration is refused where it cannot be a centrifuge's.
 #include <gtest/gtest.h>
-#include <unistd.h>
 
 #include <filesystem>
 #include <fstream>
@@ -18,18 +17,12 @@
 #include "experiment/presets.hpp"
 #include "io/checkpoint.hpp"
 #include "io/config.hpp"
+#include "../scratch_dir.hpp"
 
 namespace fs = std::filesystem;
 
 namespace trapdem {
 namespace {
-
-// A scratch folder of this test, removed at the end (also when an assertion fails).
-struct Scratch {
-  fs::path path = fs::temp_directory_path() / ("trapdem-centrifuge-run-" + std::to_string(::getpid()));
-  Scratch() { fs::remove_all(path); fs::create_directories(path); }
-  ~Scratch() { fs::remove_all(path); }
-};
 
 std::string read_text(const fs::path& p) {
   std::ifstream in(p);
@@ -57,8 +50,8 @@ std::int64_t stage_end_step(const std::string& log, const std::string& stage) {
 }
 
 TEST(CentrifugeRun, ResumedInTheFrameEndsIdentical) {
-  Scratch scratch;
-  const fs::path config = scratch.path / "tiny-in-frame.toml";
+  const test::ScratchDir scratch("trapdem-centrifuge-run");
+  const fs::path config = scratch / "tiny-in-frame.toml";
   {
     Config c = Config::load_file((fs::path(TRAPDEM_SOURCE_DIR) / "presets" / "tiny.toml").string());
     c.apply_overrides(kSmallInFrame);
@@ -67,7 +60,7 @@ TEST(CentrifugeRun, ResumedInTheFrameEndsIdentical) {
   }
   FolderRunOptions straight;
   straight.config_file = config;
-  straight.out_dir = scratch.path / "straight";
+  straight.out_dir = scratch / "straight";
   straight.quiet = true;
   straight.threads = 1;
   ASSERT_TRUE(run_in_folder(straight));
@@ -78,7 +71,7 @@ TEST(CentrifugeRun, ResumedInTheFrameEndsIdentical) {
   ASSERT_LT(spun + 10, end.stats.steps);
 
   FolderRunOptions first = straight;
-  first.out_dir = scratch.path / "interrupted";
+  first.out_dir = scratch / "interrupted";
   first.stop_at_step = settled + 20;  // within the spin-up's ramp (0.02 s, ~13 000 steps)
   ASSERT_FALSE(run_in_folder(first));
   for (const std::int64_t stop : {(spun + end.stats.steps) / 2, std::int64_t{0}}) {

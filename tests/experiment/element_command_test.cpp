@@ -8,29 +8,20 @@
 #include <string>
 #include <vector>
 
-#include <fmt/format.h>
 #include <gtest/gtest.h>
 #include <omp.h>
-#include <unistd.h>
 
 #include "core/errors.hpp"
 #include "core/json.hpp"
 #include "element_command.hpp"
 #include "element_test_config.hpp"
 #include "io/text_file.hpp"
+#include "../scratch_dir.hpp"
 
 namespace fs = std::filesystem;
 
 namespace trapdem {
 namespace {
-
-// A scratch folder of this test program's own (ctest runs programs of several work trees at once).
-fs::path scratch(const std::string& name) {
-  const fs::path dir = fs::temp_directory_path() / fmt::format("trapdem-element-command-{}-{}", ::getpid(), name);
-  fs::remove_all(dir);
-  fs::create_directories(dir);
-  return dir;
-}
 
 // The shared element-test configuration (mu = 0.3) as a file; `element_keys` go into its [element].
 fs::path write_config(const fs::path& dir, const std::string& element_keys) {
@@ -71,7 +62,8 @@ Csv read_csv(const fs::path& file) {
 // field (the angles of so small a specimen mean little; the bounds below are only sanity).
 TEST(ElementCommand, WritesTheCsvTheJsonAndTheFigureOfBothSpecimens) {
   const int threads = omp_get_max_threads();
-  const fs::path dir = scratch("files");
+  const test::ScratchDir scratch("trapdem-element-command-files");
+  const fs::path& dir = scratch.path();
   app::ElementOptions o;
   o.config_file = write_config(dir, "particles = 100\n"
                                     "inertial_number = 5e-3\n"
@@ -145,7 +137,6 @@ TEST(ElementCommand, WritesTheCsvTheJsonAndTheFigureOfBothSpecimens) {
   EXPECT_NEAR(json["angles"][0]["phi_cs_deg"].as_number(),
               0.5 * (json["specimens"][0]["phi_cs_deg"].as_number() + json["specimens"][1]["phi_cs_deg"].as_number()),
               1e-4);
-  fs::remove_all(dir);
 }
 
 std::string error_of(const app::ElementOptions& o) {
@@ -158,7 +149,8 @@ std::string error_of(const app::ElementOptions& o) {
 }
 
 TEST(ElementCommand, RefusesANonPositiveConfiningStressAndAConfigurationWithoutParticles) {
-  const fs::path dir = scratch("bad");
+  const test::ScratchDir scratch("trapdem-element-command-bad");
+  const fs::path& dir = scratch.path();
   app::ElementOptions o;
   o.config_file = write_config(dir, "particles = 100\n").string();
   o.out_dir = (dir / "out").string();
@@ -179,7 +171,6 @@ TEST(ElementCommand, RefusesANonPositiveConfiningStressAndAConfigurationWithoutP
   const std::string message = error_of(o);
   EXPECT_NE(message.find("bare.toml"), std::string::npos) << message;
   EXPECT_NE(message.find("no [particles] table"), std::string::npos) << message;
-  fs::remove_all(dir);
 }
 
 }  // namespace

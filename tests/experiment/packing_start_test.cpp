@@ -3,7 +3,6 @@
 // the particle id and the file line; a packing denser than a pour's in the neighbour search.
 #include <gtest/gtest.h>
 #include <omp.h>
-#include <unistd.h>
 
 #include <algorithm>
 #include <cmath>
@@ -24,20 +23,15 @@
 #include "io/lammps_data.hpp"
 #include "io/snapshot.hpp"
 #include "io/text_file.hpp"
+#include "../scratch_dir.hpp"
 
 namespace fs = std::filesystem;
 using namespace trapdem;
+using trapdem::test::ScratchDir;
 
 namespace {
 
 const fs::path kTiny = fs::path(TRAPDEM_SOURCE_DIR) / "presets" / "tiny.toml";
-
-fs::path fresh_dir(const std::string& name) {
-  const fs::path dir = fs::temp_directory_path() / ("trapdem-packing-" + name + "-" + std::to_string(::getpid()));
-  fs::remove_all(dir);
-  fs::create_directories(dir);
-  return dir;
-}
 
 // The tiny preset's box (80 x 14 x 60 mm) filled with a simple cubic lattice of 4 mm spheres 4.4 mm
 // apart: 18 x 3 x `layers`, ids 101, 102, ... (not 1..N: the ids must be kept, not renumbered).
@@ -102,7 +96,8 @@ void write_dump(const fs::path& path, const Particles& p, bool velocities) {
 // is kept with its id, and both runs reach the end.
 TEST(PackingStart, LammpsDataThenTheRunsSnapshot) {
   omp_set_num_threads(1);
-  const fs::path dir = fresh_dir("data");
+  const ScratchDir scratch("trapdem-packing-data");
+  const fs::path& dir = scratch.path();
   const Particles packed = lattice(4, 2600.0);
   write_lammps_data((dir / "bed.data").string(), packed, {0, 0, 0}, {0.08, 0.014, 0.045});
 
@@ -138,13 +133,13 @@ TEST(PackingStart, LammpsDataThenTheRunsSnapshot) {
   EXPECT_EQ(read_back.id, from.id);
   EXPECT_EQ(read_back.position, from.position);  // no shift: the same places
   EXPECT_EQ(ids_of(read_snapshot(second / "snapshots.h5", snaps2.back().name).id), ids_of(packed.id));
-  fs::remove_all(dir);
 }
 
 // From a LAMMPS dump with velocities, shifted into the box, starting at spin-up.
 TEST(PackingStart, DumpWithVelocitiesShiftedStartsAtSpinUp) {
   omp_set_num_threads(1);
-  const fs::path dir = fresh_dir("dump");
+  const ScratchDir scratch("trapdem-packing-dump");
+  const fs::path& dir = scratch.path();
   Particles packed = lattice(3);
   for (Vec3& x : packed.position) x.z += 0.010;  // 10 mm too high: shift brings it down
   write_dump(dir / "bed.dump", packed, true);
@@ -166,12 +161,12 @@ TEST(PackingStart, DumpWithVelocitiesShiftedStartsAtSpinUp) {
   ASSERT_TRUE(experiment.run(seen));
   EXPECT_EQ(seen.finished, (std::vector<Stage>{Stage::spin_up, Stage::lowering}));
   EXPECT_EQ(ids_of(experiment.simulation().particles().id), ids_of(packed.id));
-  fs::remove_all(dir);
 }
 
 // Each check's error names the file, the line and the particle id.
 TEST(PackingStart, EachCheckNamesTheParticleAndLine) {
-  const fs::path dir = fresh_dir("checks");
+  const ScratchDir scratch("trapdem-packing-checks");
+  const fs::path& dir = scratch.path();
   const fs::path dump = dir / "bad.dump";
   auto error_for = [&](Particles p, std::vector<std::string> extra = {}) {
     write_dump(dump, p, false);
@@ -249,14 +244,14 @@ TEST(PackingStart, EachCheckNamesTheParticleAndLine) {
   append_snapshot(h5, make_snapshot(q, 0.0, "settling", 0.0, 0));
   const std::string row = error_of(short_run(h5.string(), "trapdem"));
   EXPECT_NE(row.find(fmt::format("{} snapshot 000000, row 5: particle 106", h5.string())), std::string::npos) << row;
-  fs::remove_all(dir);
 }
 
 // A packing denser than a pour's (face-centred cubic at contact, solid fraction 0.74): the
 // neighbour search lists every touching pair and the bed settles without tripping the overlap guard.
 TEST(PackingStart, DensestPackingInTheNeighbourSearch) {
   omp_set_num_threads(1);
-  const fs::path dir = fresh_dir("fcc");
+  const ScratchDir scratch("trapdem-packing-fcc");
+  const fs::path& dir = scratch.path();
   const double r = 0.002, a = 4.0 * r / std::sqrt(2.0);  // FCC cell edge for spheres touching along face diagonals
   Particles p;
   std::int64_t id = 1;
@@ -290,14 +285,14 @@ TEST(PackingStart, DensestPackingInTheNeighbourSearch) {
     }
   // Most of the lattice's 12 neighbours per sphere (6 pairs each in the bulk) touch under gravity.
   EXPECT_GT(touching, 2 * now.size());
-  fs::remove_all(dir);
 }
 
 // The [packing] keys are part of the run's identity: a resume with another shift is refused, the
 // same configuration carries on from the checkpoint (not from the file again) to the end.
 TEST(PackingStart, ResumeIdentityCoversThePackingKeys) {
   omp_set_num_threads(1);
-  const fs::path dir = fresh_dir("resume");
+  const ScratchDir scratch("trapdem-packing-resume");
+  const fs::path& dir = scratch.path();
   write_lammps_data((dir / "bed.data").string(), lattice(2), {0, 0, 0}, {0.08, 0.014, 0.045});
   FolderRunOptions o;
   o.config_file = kTiny;
@@ -332,13 +327,13 @@ TEST(PackingStart, ResumeIdentityCoversThePackingKeys) {
   EXPECT_EQ(snaps.front().stage, "packing");
   EXPECT_EQ(std::count_if(snaps.begin(), snaps.end(), [](const SnapshotInfo& s) { return s.stage == "packing"; }), 1);
   EXPECT_EQ(snaps.back().particle_count, lattice(2).size());
-  fs::remove_all(dir);
 }
 
 // A dump's density column is the particles' density (else [particles].density, as above); a lone
 // vx column is no velocity.
 TEST(PackingStart, DumpDensityColumn) {
-  const fs::path dir = fresh_dir("density");
+  const ScratchDir scratch("trapdem-packing-density");
+  const fs::path& dir = scratch.path();
   std::ofstream(dir / "bed.dump") << "ITEM: TIMESTEP\n0\nITEM: NUMBER OF ATOMS\n2\nITEM: ATOMS id x y z radius density vx\n"
                                      "4 0.02 0.007 0.0022 0.002 3000 5\n9 0.03 0.007 0.0022 0.002 2000 5\n";
   const ExperimentConfig c = config_with(short_run((dir / "bed.dump").string(), "lammps-dump"));
@@ -347,7 +342,6 @@ TEST(PackingStart, DumpDensityColumn) {
   EXPECT_NEAR(c.packing.particles->density(1), 2000.0, 1e-9);
   EXPECT_EQ(c.packing.particles->velocity[0], Vec3{});
   EXPECT_EQ(c.packing.particles->id, (std::vector<std::int64_t>{4, 9}));
-  fs::remove_all(dir);
 }
 
 namespace {
@@ -372,7 +366,8 @@ class WorkingFolder {
 // particle count. The resolved configuration names the file absolute: read again from elsewhere
 // (as a resume reads the run folder's resolved.toml) it is the same file.
 TEST(PackingStart, RelativeFromIsTheConfigurationFilesFolder) {
-  const fs::path dir = fresh_dir("relative");
+  const ScratchDir scratch("trapdem-packing-relative");
+  const fs::path& dir = scratch.path();
   for (const char* sub : {"configs", "work", "run"}) fs::create_directories(dir / sub);
   const Particles beside = lattice(2), in_work = lattice(1);
   write_dump(dir / "configs" / "bed.dump", beside, false);
@@ -400,7 +395,6 @@ TEST(PackingStart, RelativeFromIsTheConfigurationFilesFolder) {
   const WorkingFolder elsewhere(dir);
   Config again = Config::load_file((dir / "run" / "resolved.toml").string());
   EXPECT_EQ(ExperimentConfig::from(again).packing.particles->size(), beside.size());
-  fs::remove_all(dir);
 }
 
 // docs/output.md's example as written (issue 41): the tiny preset's own settled deposit (snapshot 1
@@ -409,7 +403,8 @@ TEST(PackingStart, RelativeFromIsTheConfigurationFilesFolder) {
 // deposit the same line says how many particles stand above it and what box a run from it needs.
 TEST(PackingStart, TheDocsExampleStartsFromTheTinyPresetsOwnDeposit) {
   omp_set_num_threads(1);
-  const fs::path dir = fresh_dir("docs-example");
+  const ScratchDir scratch("trapdem-packing-docs-example");
+  const fs::path dir = scratch.path();
   FolderRunOptions poured;
   poured.config_file = kTiny;
   poured.overrides = {"spin_up.ramp_time=0.005", "trapdoor.travel=0.0005", "output.snapshot_displacements=[0.0]"};
@@ -444,5 +439,4 @@ TEST(PackingStart, TheDocsExampleStartsFromTheTinyPresetsOwnDeposit) {
   EXPECT_NE(low_log.find("stand above the box's height (45.0 mm): a run started from this deposit needs box.height >="),
             std::string::npos)
       << low_log;
-  fs::remove_all(dir);
 }

@@ -2,7 +2,6 @@
 // across stage changes, the ETA from a sliding-window rate), its text, and a tiny run's lines.
 #include <gtest/gtest.h>
 #include <omp.h>
-#include <unistd.h>
 
 #include <filesystem>
 #include <regex>
@@ -17,9 +16,11 @@
 #include "experiment/run_progress.hpp"
 #include "experiment/trapdoor_experiment.hpp"
 #include "io/text_file.hpp"
+#include "../scratch_dir.hpp"
 
 namespace fs = std::filesystem;
 using namespace trapdem;
+using trapdem::test::ScratchDir;
 
 namespace {
 
@@ -171,8 +172,8 @@ TEST(RunProgress, Text) {
 // percent never going back, no "?" and no "-0.00"; "1 thread"; the summary once, with run.json's rate.
 TEST(RunProgress, TinyRunPrintedLines) {
   omp_set_num_threads(1);
-  const fs::path out = fs::temp_directory_path() / ("trapdem-progress-" + std::to_string(::getpid()));
-  fs::remove_all(out);
+  const ScratchDir scratch("trapdem-progress");
+  const fs::path out = scratch / "run";
   FolderRunOptions o;
   o.config_file = fs::path(TRAPDEM_SOURCE_DIR) / "presets" / "tiny.toml";
   o.overrides = {"pluviation.fill_height=0.01", "settling.max_time=0.01", "spin_up.ramp_time=0.005",
@@ -212,5 +213,4 @@ TEST(RunProgress, TinyRunPrintedLines) {
   const Json record = Json::parse(read_text_file(out / "run.json"), "run.json");
   EXPECT_NE(finished.find(fmt::format("{:.2f} M particle-steps/s", record["particle_steps_per_second"].as_number() / 1e6)),
             std::string::npos) << finished;
-  fs::remove_all(out);
 }

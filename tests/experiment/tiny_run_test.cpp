@@ -16,9 +16,11 @@
 #include "io/config.hpp"
 #include "io/snapshot.hpp"
 #include "run_command.hpp"
+#include "../scratch_dir.hpp"
 
 namespace fs = std::filesystem;
 using namespace trapdem;
+using trapdem::test::ScratchDir;
 
 namespace {
 
@@ -78,12 +80,6 @@ std::string read_text(const fs::path& p) {
   return s.str();
 }
 
-fs::path fresh_dir(const std::string& name) {
-  const fs::path dir = fs::temp_directory_path() / ("trapdem-test-" + name + "-" + std::to_string(::getpid()));
-  fs::remove_all(dir);
-  return dir;
-}
-
 }  // namespace
 
 TEST(TinyRun, AllStagesLoadsAndArching) {
@@ -138,8 +134,8 @@ TEST(TinyRun, AllStagesLoadsAndArching) {
 TEST(TinyRun, ResumedRunEndsIdentical) {
   const std::vector<std::string> small = {"pluviation.fill_height=0.02", "settling.max_time=0.04",
                                           "trapdoor.travel=0.0015", "output.snapshot_displacements=[0.0, 0.001]"};
-  const fs::path config = fresh_dir("config") / "tiny-small.toml";
-  fs::create_directories(config.parent_path());
+  const ScratchDir scratch("trapdem-tiny-resume");
+  const fs::path config = scratch / "tiny-small.toml";
   {
     Config c = Config::load_file((app::preset_directory() / "tiny.toml").string());
     c.apply_overrides(small);
@@ -148,7 +144,7 @@ TEST(TinyRun, ResumedRunEndsIdentical) {
   }
   app::RunOptions straight;
   straight.config_file = config.string();
-  straight.out_dir = fresh_dir("straight").string();
+  straight.out_dir = (scratch / "straight").string();
   straight.quiet = true;
   straight.threads = 1;
   ASSERT_EQ(app::run_experiment(straight), 0);
@@ -180,7 +176,7 @@ TEST(TinyRun, ResumedRunEndsIdentical) {
   // piece must continue exactly where the last stopped for the end to match (two runs' work, not
   // three as with an interrupted run per stop).
   app::RunOptions first = straight;
-  first.out_dir = fresh_dir("interrupted").string();
+  first.out_dir = (scratch / "interrupted").string();
   first.stop_at_step = end.stats.steps / 3;
   ASSERT_EQ(app::run_experiment(first), 130) << "the run should stop at step " << first.stop_at_step;
   for (std::int64_t stop : {end.stats.steps - 700, std::int64_t{0}}) {
@@ -208,18 +204,14 @@ TEST(TinyRun, ResumedRunEndsIdentical) {
   EXPECT_EQ(read_text(fs::path(first.out_dir) / "trapdoor.csv"), read_text(fs::path(straight.out_dir) / "trapdoor.csv"));
   EXPECT_EQ(list_snapshots(fs::path(first.out_dir) / "snapshots.h5").size(),
             list_snapshots(fs::path(straight.out_dir) / "snapshots.h5").size());
-  fs::remove_all(first.out_dir);
-  fs::remove_all(straight.out_dir);
-  fs::remove_all(config.parent_path());
 }
 
 TEST(TinyRun, OutputFolderHoldingARunIsRefused) {
-  const fs::path dir = fresh_dir("occupied");
-  fs::create_directories(dir);
+  const ScratchDir dir("trapdem-tiny-occupied");
   std::ofstream(dir / "checkpoint.h5") << "x";
   app::RunOptions o;
   o.preset = "tiny";
-  o.out_dir = dir.string();
+  o.out_dir = dir.path().string();
   o.quiet = true;
   try {
     app::run_experiment(o);
@@ -227,7 +219,6 @@ TEST(TinyRun, OutputFolderHoldingARunIsRefused) {
   } catch (const InputError& e) {
     EXPECT_NE(std::string(e.what()).find("--resume"), std::string::npos) << e.what();
   }
-  fs::remove_all(dir);
 }
 
 // A periodic depth (no front and back walls) runs through all stages too, and at the end of spin-up

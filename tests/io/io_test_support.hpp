@@ -1,7 +1,7 @@
 #pragma once
-// Helpers shared by the tests: a scratch folder that cleans up after itself (every test's scratch
-// under /tmp is one, so a failed test leaves nothing: tests/scratch_check.sh), whole-file reads,
-// and a scoped file-size limit that makes writes fail as on a full disk.
+// Helpers shared by the file tests: the scratch folder (tests/scratch_dir.hpp, here as
+// io_testing::ScratchDir too), whole-file reads, and a scoped file-size limit that makes writes fail
+// as on a full disk.
 #include <sys/resource.h>
 #include <unistd.h>
 
@@ -14,36 +14,11 @@
 #include <string>
 
 #include "core/errors.hpp"
+#include "../scratch_dir.hpp"
 
 namespace trapdem::io_testing {
 
-class ScratchDir {
- public:
-  // A new folder PREFIX-XXXXXX under the temporary directory (mkdtemp: unique, also between the
-  // parallel processes of ctest -j), removed with everything in it when this goes (a test that
-  // fails included; a helper's function-local static one at the process's exit).
-  explicit ScratchDir(const std::string& prefix = "trapdem-io") {
-    std::string pattern = (std::filesystem::temp_directory_path() / (prefix + "-XXXXXX")).string();
-    if (!::mkdtemp(pattern.data())) throw std::runtime_error("mkdtemp failed");
-    path_ = pattern;
-  }
-  ~ScratchDir() {
-    std::error_code ec;
-    std::filesystem::permissions(path_, std::filesystem::perms::owner_all, ec);
-    std::filesystem::remove_all(path_, ec);
-  }
-  const std::filesystem::path& path() const { return path_; }
-  std::filesystem::path operator/(const std::string& name) const { return path_ / name; }
-  // Names in the folder (to check that no temporary is left behind).
-  std::size_t entry_count() const {
-    std::size_t n = 0;
-    for ([[maybe_unused]] const auto& e : std::filesystem::directory_iterator(path_)) ++n;
-    return n;
-  }
-
- private:
-  std::filesystem::path path_;
-};
+using test::ScratchDir;  // tests/scratch_dir.hpp
 
 inline std::string read_all(const std::filesystem::path& path) {
   std::ifstream in(path, std::ios::binary);

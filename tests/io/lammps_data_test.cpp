@@ -9,6 +9,7 @@
 #include <string>
 
 #include "core/errors.hpp"
+#include "io_test_support.hpp"
 
 using namespace trapdem;
 
@@ -110,12 +111,12 @@ TEST(LammpsData, RoundTripIsExact) {
   p.add(9, {0.099, 1e-4, 0.001}, 0.00123456789, 7800.0, {}, {0.0, 11.0, 0.0});
   p.image[1] = {1, 0, -2};
   const Vec3 lo{0, 0, 0}, hi{0.1, 0.0182, 0.2};
-  const auto path = std::filesystem::temp_directory_path() / "trapdem_lammps_round_trip.data";
+  const io_testing::ScratchDir dir("trapdem-lammps-data");
+  const auto path = dir / "round_trip.data";
   LammpsWriteOptions opt;
   opt.type = {1, 2, 1};
   write_lammps_data(path.string(), p, lo, hi, opt);
   const LammpsData d = read_lammps_data(path.string());
-  std::filesystem::remove(path);
   ASSERT_EQ(d.particles.size(), p.size());
   EXPECT_EQ(d.box_lower, lo);
   EXPECT_EQ(d.box_upper, hi);

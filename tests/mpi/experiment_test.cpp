@@ -7,7 +7,6 @@
 // sites a bouncing particle blocks depends on the trajectories, which part between rank counts.
 #include <gtest/gtest.h>
 #include <mpi.h>
-#include <unistd.h>
 
 #include <algorithm>
 #include <filesystem>
@@ -22,6 +21,7 @@
 #include "io/text_file.hpp"
 #include "mpi_support.hpp"
 #include "parallel/mpi_run_ranks.hpp"
+#include "shared_scratch_dir.hpp"
 
 namespace fs = std::filesystem;
 
@@ -44,21 +44,6 @@ std::vector<std::string> small_run(int particles) {
           "trapdoor.rate=0.2",
           "output.snapshot_displacements=[0.0, 0.002]",
           "output.ground_reaction_step=0.0002"};
-}
-
-// A fresh folder with the same path on every rank of `comm` (rank 0's process id in its name).
-fs::path fresh_folder(const std::string& name, MPI_Comm comm = MPI_COMM_WORLD) {
-  long pid = long(getpid());
-  MPI_Bcast(&pid, 1, MPI_LONG, 0, comm);
-  const fs::path dir = fs::temp_directory_path() / ("trapdem-mpi-" + name + "-" + std::to_string(pid));
-  int rank = 0;
-  MPI_Comm_rank(comm, &rank);
-  if (rank == 0) {
-    fs::remove_all(dir);
-    fs::create_directories(dir);
-  }
-  MPI_Barrier(comm);
-  return dir;
 }
 
 FolderRunOptions run_options(const fs::path& out, int particles, RunRanks* ranks, std::int64_t stop_at_step = 0) {
@@ -149,7 +134,8 @@ Arching arching(const fs::path& dir) {
 TEST(ExperimentOnRanks, SameStagesParticlesAndCurveAsOneProcess) {
   ASSERT_GE(world_size(), 2) << "run on several ranks";
   MpiRunRanks ranks(MPI_COMM_WORLD);
-  const fs::path dir = fresh_folder("experiment");
+  const test::SharedScratchDir scratch("trapdem-mpi-experiment");  // removed after the last barrier
+  const fs::path& dir = scratch.path();
   ASSERT_TRUE(run_in_folder(run_options(dir / "ranks", 250, &ranks)));
   if (world_rank() == 0) {
     ASSERT_TRUE(run_in_folder(run_options(dir / "one", 250, nullptr)));
@@ -173,7 +159,6 @@ TEST(ExperimentOnRanks, SameStagesParticlesAndCurveAsOneProcess) {
     EXPECT_NEAR(a_ranks.late_mean, a_one.late_mean, 0.4);
     testing_support::report("base load / weight {:.3f} on {} ranks, {:.3f} on one; late trapdoor ratio {:.3f} and {:.3f}",
                             load_ranks, world_size(), load_one, a_ranks.late_mean, a_one.late_mean);
-    fs::remove_all(dir);
   }
   MPI_Barrier(MPI_COMM_WORLD);
 }
@@ -197,7 +182,8 @@ void expect_same_state(const fs::path& a, const fs::path& b) {
 TEST(ResumeOnSameRanks, IsBitwise) {
   ASSERT_GE(world_size(), 2) << "run on several ranks";
   MpiRunRanks ranks(MPI_COMM_WORLD);
-  const fs::path dir = fresh_folder("resume-same");
+  const test::SharedScratchDir scratch("trapdem-mpi-resume-same");  // removed after the last barrier
+  const fs::path& dir = scratch.path();
   ASSERT_TRUE(run_in_folder(run_options(dir / "straight", 150, &ranks)));
   ASSERT_FALSE(run_in_folder(run_options(dir / "stopped", 150, &ranks, 14000)));
   ASSERT_TRUE(run_in_folder(resume_options(dir / "stopped", &ranks)));
@@ -205,7 +191,6 @@ TEST(ResumeOnSameRanks, IsBitwise) {
     EXPECT_EQ(read_text_file(dir / "stopped" / "trapdoor.csv"), read_text_file(dir / "straight" / "trapdoor.csv"));
     expect_same_state(dir / "stopped", dir / "straight");
     EXPECT_NE(read_text_file(dir / "stopped" / "run.log").find("resumed"), std::string::npos);
-    fs::remove_all(dir);
   }
   MPI_Barrier(MPI_COMM_WORLD);
 }
@@ -216,7 +201,8 @@ TEST(ResumeOnOtherRanks, CompletesWithTheSameParticles) {
   ASSERT_GE(world_size(), 3) << "run on 3 ranks";
   MPI_Comm two = MPI_COMM_NULL;
   MPI_Comm_split(MPI_COMM_WORLD, world_rank() < 2 ? 0 : MPI_UNDEFINED, world_rank(), &two);
-  const fs::path dir = fresh_folder("resume-other");
+  const test::SharedScratchDir scratch("trapdem-mpi-resume-other");  // removed after the last barrier
+  const fs::path& dir = scratch.path();
   if (two != MPI_COMM_NULL) {
     MpiRunRanks pair(two);
     EXPECT_FALSE(run_in_folder(run_options(dir / "on3", 150, &pair, 6000)));
@@ -238,7 +224,6 @@ TEST(ResumeOnOtherRanks, CompletesWithTheSameParticles) {
       std::sort(ids.begin(), ids.end());  // one process checkpoints in its own order
       EXPECT_EQ(ids, expected) << name;
     }
-    fs::remove_all(dir);
   }
   MPI_Barrier(MPI_COMM_WORLD);
 }

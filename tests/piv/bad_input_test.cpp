@@ -13,6 +13,7 @@
 #include "piv_test_support.hpp"
 #include "piv/run_piv.hpp"
 #include "piv/speckle_synthesis.hpp"
+#include "../scratch_dir.hpp"
 
 namespace trapdem {
 namespace {
@@ -35,8 +36,7 @@ TEST(PivBadInput, ImagesOfDifferentSizes) {
 }
 
 TEST(PivBadInput, UnreadableFiles) {
-  const auto dir = std::filesystem::temp_directory_path() / "trapdem_piv_bad_input";
-  std::filesystem::create_directories(dir);
+  const test::ScratchDir dir("trapdem-piv-bad-input");
   const auto images = small_pair();
   const auto good = dir / "good.png";
   cv::imwrite(good.string(), images[0]);

@@ -8,12 +8,10 @@
 #include <filesystem>
 #include <random>
 
-#include <fmt/format.h>
-#include <unistd.h>
-
 #include "io/snapshot.hpp"
 #include "piv/dem_camera.hpp"
 #include "piv/run_piv.hpp"
+#include "../scratch_dir.hpp"
 
 namespace fs = std::filesystem;
 
@@ -56,8 +54,7 @@ Snapshot make_bed(bool moved) {
 }
 
 TEST(DemCamera, PivOfRenderedSnapshotsReproducesTheParticleDisplacement) {
-  const fs::path dir = fs::temp_directory_path() / fmt::format("trapdem-dem-camera-{}", ::getpid());
-  fs::create_directories(dir);
+  const test::ScratchDir dir("trapdem-dem-camera");
   const fs::path h5 = dir / "snapshots.h5";
   append_snapshot(h5, make_bed(false));
   append_snapshot(h5, make_bed(true));
@@ -107,7 +104,6 @@ TEST(DemCamera, PivOfRenderedSnapshotsReproducesTheParticleDisplacement) {
   // against the field, 0.9 % against the particles.
   EXPECT_LT(rms, 0.02 * max_disp);
   EXPECT_LT(agree.rms_error_px, 0.02 * max_disp);
-  fs::remove_all(dir);
 }
 
 }  // namespace

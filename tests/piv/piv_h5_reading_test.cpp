@@ -10,6 +10,7 @@
 #include "analysis/dem_piv_comparison.hpp"
 #include "core/errors.hpp"
 #include "piv/piv_output.hpp"
+#include "../scratch_dir.hpp"
 
 namespace trapdem {
 namespace {
@@ -51,9 +52,7 @@ void write_synthetic_piv(const fs::path& file, const std::vector<double>& deltas
 }
 
 TEST(PivH5Reading, VerticalDisplacementInModelCoordinatesAboutTheTrapdoorCentre) {
-  const fs::path dir = fs::temp_directory_path() / "trapdem_piv_h5_reading";
-  fs::remove_all(dir);
-  fs::create_directories(dir);
+  const test::ScratchDir dir("trapdem-piv-h5-reading");
   write_synthetic_piv(dir / "piv.h5", {0.0, 0.005, 0.01});
   ASSERT_EQ(piv_image_names(dir / "piv.h5").size(), 3u);
   EXPECT_EQ(piv_image_names(dir / "piv.h5")[2], "/somewhere/camera/002_10mm.png");
@@ -68,7 +67,6 @@ TEST(PivH5Reading, VerticalDisplacementInModelCoordinatesAboutTheTrapdoorCentre)
   EXPECT_NEAR(g.w[0], settlement_w({0.004, 0.136}, 0.01) - settlement_w({0.004, 0.136}, 0.005), 1e-12);
   EXPECT_THROW(read_piv_vertical_displacement(dir / "piv.h5", 1, 4), InputError);
   EXPECT_THROW(piv_image_names(dir / "missing.h5"), InputError);
-  fs::remove_all(dir);
 }
 
 }  // namespace

@@ -10,6 +10,7 @@
 #include "io/text_file.hpp"
 #include "piv/dem_camera.hpp"
 #include "piv_command.hpp"
+#include "../scratch_dir.hpp"
 #include "../study/synthetic_run.hpp"
 
 namespace trapdem {
@@ -25,7 +26,8 @@ TEST(LoweringStart, TheLastSnapshotBeforeTheTrapdoorMoves) {
 }
 
 TEST(RenderSuggestion, PivStartsAtTheFirstLoweringImage) {
-  const fs::path dir = fs::temp_directory_path() / "trapdem-render-suggestion";
+  const test::ScratchDir scratch("trapdem-render-suggestion");
+  const fs::path dir = scratch / "run";
   // Snapshots 000 (pour), 001 (settled), 002 (start of lowering) at 0 mm, then 1 and 2 mm.
   test::make_synthetic_run(dir, {0.0, 0.0, 0.0, 0.001, 0.002},
                            [](Point2 p, double delta) { return Point2{0.0, -delta * p.z / 0.12}; });

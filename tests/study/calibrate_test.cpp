@@ -16,18 +16,13 @@
 #include "io/text_file.hpp"
 #include "piv_command.hpp"
 #include "run_command.hpp"
+#include "../scratch_dir.hpp"
 
 namespace fs = std::filesystem;
 using namespace trapdem;
+using trapdem::test::ScratchDir;
 
 namespace {
-
-fs::path scratch(const std::string& name) {
-  const fs::path dir = fs::temp_directory_path() / ("trapdem-calibrate-" + name + "-" + std::to_string(::getpid()));
-  fs::remove_all(dir);
-  fs::create_directories(dir);
-  return dir;
-}
 
 // The tiny preset shortened (a shallow pour, 3 mm of travel, a snapshot every millimetre).
 fs::path write_base(const fs::path& dir) {
@@ -59,7 +54,8 @@ TEST(Calibrate, VaryParsesKeysAndValuesAndRefusesMistakes) {
 }
 
 TEST(Calibrate, PivOfARenderedTinyRunRanksItsOwnParametersFirst) {
-  const fs::path dir = scratch("planted");
+  const ScratchDir scratch("trapdem-calibrate-planted");
+  const fs::path& dir = scratch.path();
   const fs::path base = write_base(dir);
 
   // The "experiment": mu_k = 0.5, mu_r = 0.3 (the tiny preset has mu_s = 0.5, so mu_k <= mu_s and
@@ -130,5 +126,4 @@ TEST(Calibrate, PivOfARenderedTinyRunRanksItsOwnParametersFirst) {
   }
   o.format = "eps";
   EXPECT_THROW(calibrate(o), InputError);
-  fs::remove_all(dir);
 }

@@ -11,6 +11,7 @@
 #include "core/json.hpp"
 #include "io/snapshot.hpp"
 #include "study/deposit_report.hpp"
+#include "../scratch_dir.hpp"
 
 using namespace trapdem;
 namespace fs = std::filesystem;
@@ -37,10 +38,9 @@ Snapshot lattice_snapshot(const std::string& stage, double displacement) {
   return snap;
 }
 
-fs::path fresh_folder(const std::string& name) {
-  const fs::path dir = fs::temp_directory_path() / ("trapdem_deposit_" + name);
-  fs::remove_all(dir);
-  fs::create_directories(dir);
+// A run folder holding the lattice's resolved.toml (its snapshots added by the test).
+test::ScratchDir fresh_folder(const std::string& name) {
+  test::ScratchDir dir("trapdem-deposit-" + name);
   const double s = 0.002 * (1.0 - 1e-6);
   std::ofstream(dir / "resolved.toml") << "name = \"lattice\"\n[box]\nwidth = " << 10 * s << "\ndepth = " << 5 * s
                                        << "\nheight = 0.1\n[trapdoor]\nwidth = 0.004\ncentre = 0.01\ntravel = 0.002\n"
@@ -51,18 +51,18 @@ fs::path fresh_folder(const std::string& name) {
 }  // namespace
 
 TEST(DepositReport, MeasuresTheSnapshotsBeforeTheTrapdoorMoves) {
-  const fs::path dir = fresh_folder("stages");
+  const test::ScratchDir dir = fresh_folder("stages");
   append_snapshot(dir / "snapshots.h5", lattice_snapshot("pluviation", 0.0));
   append_snapshot(dir / "snapshots.h5", lattice_snapshot("settling", 0.0));
   append_snapshot(dir / "snapshots.h5", lattice_snapshot("lowering", 0.0));
   append_snapshot(dir / "snapshots.h5", lattice_snapshot("lowering", 0.001));
-  const auto deposits = measure_run_deposit(dir);
+  const auto deposits = measure_run_deposit(dir.path());
   ASSERT_EQ(deposits.size(), 3u);  // not the snapshot at 1 mm
   EXPECT_EQ(deposits[0].stage, "pluviation");
   EXPECT_EQ(deposits[2].stage, "lowering");
   for (const auto& d : deposits) EXPECT_EQ(d.metrics.particles, 1000);
 
-  const fs::path json = write_deposit_json(dir, deposits);
+  const fs::path json = write_deposit_json(dir.path(), deposits);
   std::stringstream text;
   text << std::ifstream(json).rdbuf();
   const Json doc = Json::parse(text.str(), json.string());
@@ -70,18 +70,16 @@ TEST(DepositReport, MeasuresTheSnapshotsBeforeTheTrapdoorMoves) {
   // The lattice's bulk: pi/6 (the lattice test in tests/analysis has the tolerance's reason).
   EXPECT_NEAR(doc["deposits"][1]["bulk_solid_fraction"].as_number(), std::numbers::pi / 6.0, 1e-4);
   EXPECT_NE(deposit_table(deposits).find("settling"), std::string::npos);
-  fs::remove_all(dir);
 }
 
 TEST(DepositReport, AFolderWithoutSnapshotsIsAClearError) {
-  const fs::path dir = fresh_folder("empty");
+  const test::ScratchDir dir = fresh_folder("empty");
   try {
-    measure_run_deposit(dir);
+    measure_run_deposit(dir.path());
     FAIL() << "no error";
   } catch (const InputError& e) {
     EXPECT_NE(std::string(e.what()).find("no snapshots.h5"), std::string::npos) << e.what();
   }
   fs::remove(dir / "resolved.toml");
-  EXPECT_THROW(measure_run_deposit(dir), InputError);
-  fs::remove_all(dir);
+  EXPECT_THROW(measure_run_deposit(dir.path()), InputError);
 }

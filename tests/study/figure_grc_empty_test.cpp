@@ -1,7 +1,6 @@
 // Issue 41: `trapdem figure --grc` of a run whose trapdoor.csv has its header only (a run that has
 // not reached its lowering) is refused naming the file, instead of an empty chart reported written.
 #include <gtest/gtest.h>
-#include <unistd.h>
 
 #include <filesystem>
 #include <fstream>
@@ -10,6 +9,7 @@
 #include "core/errors.hpp"
 #include "experiment/ground_reaction.hpp"
 #include "study/ground_reaction_overlay.hpp"
+#include "../scratch_dir.hpp"
 
 namespace trapdem {
 namespace {
@@ -17,11 +17,7 @@ namespace {
 namespace fs = std::filesystem;
 
 TEST(FigureGrc, HeaderOnlyTrapdoorCsvIsRefused) {
-  const fs::path dir = fs::temp_directory_path() / ("trapdem-grc-empty-" + std::to_string(::getpid()));
-  struct Remove {
-    fs::path p;
-    ~Remove() { fs::remove_all(p); }
-  } remove{dir};
+  const test::ScratchDir dir("trapdem-grc-empty");
   fs::create_directories(dir / "run");
   std::ofstream(dir / "run" / "resolved.toml")
       << "name = \"empty\"\n[box]\nwidth = 0.2\ndepth = 0.01\nheight = 0.14\n"

@@ -4,7 +4,6 @@
 // is left out with --finished-only, the particle data stays behind, and study.log keeps every
 // session's lines once each.
 #include <gtest/gtest.h>
-#include <unistd.h>
 
 #include <cstdlib>
 #include <filesystem>
@@ -12,6 +11,7 @@
 #include <string>
 
 #include "io/text_file.hpp"
+#include "../scratch_dir.hpp"
 
 namespace fs = std::filesystem;
 using namespace trapdem;
@@ -19,8 +19,6 @@ using namespace trapdem;
 namespace {
 
 const fs::path kScript = fs::path(TRAPDEM_SOURCE_DIR) / "scripts" / "publish-study.sh";
-
-fs::path scratch() { return fs::temp_directory_path() / ("trapdem-publish-" + std::to_string(::getpid())); }
 
 void write(const fs::path& file, const std::string& text) {
   fs::create_directories(file.parent_path());
@@ -46,8 +44,8 @@ int publish(const fs::path& study, const fs::path& dest) {
 }  // namespace
 
 TEST(PublishStudy, TwoSessionsPublishTheirCasesAndTheWholeLog) {
-  const fs::path dir = scratch(), dest = dir / "published";
-  fs::remove_all(dir);
+  const test::ScratchDir dir("trapdem-publish");
+  const fs::path dest = dir / "published";
 
   // First session: case a finished, b running.
   const fs::path first = dir / "first";
@@ -78,5 +76,4 @@ TEST(PublishStudy, TwoSessionsPublishTheirCasesAndTheWholeLog) {
   write(second / "study.log", published + "22:00  report written\n");
   ASSERT_EQ(publish(second, dest), 0);
   EXPECT_EQ(read_text_file(dest / "study.log"), published + "22:00  report written\n");
-  fs::remove_all(dir);
 }

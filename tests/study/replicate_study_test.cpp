@@ -4,7 +4,6 @@
 // the element test's angles in the metrics, a second call that runs nothing, and reports made after
 // runs' snapshots were deleted.
 #include <gtest/gtest.h>
-#include <unistd.h>
 
 #include <cmath>
 #include <filesystem>
@@ -17,6 +16,7 @@
 #include "io/text_file.hpp"
 #include "study_command.hpp"
 #include "tiny_study.hpp"
+#include "../scratch_dir.hpp"
 
 namespace fs = std::filesystem;
 using namespace trapdem;
@@ -36,10 +36,11 @@ const int kSeeds[] = {7, 8};  // tiny's pluviation.seed is 7: 7 and 7 + 1
 
 Json read_json(const fs::path& file) { return Json::parse(read_text_file(file), file.string()); }
 
-// The study's folder (one study for all the checks: it is a minute of running).
+// The study's folder (one study for all the checks: it is a minute of running), removed at the
+// process's exit.
 const fs::path& study_dir() {
-  static const fs::path dir = fs::temp_directory_path() / ("trapdem-replicate-study-" + std::to_string(::getpid()));
-  return dir;
+  static const test::ScratchDir dir("trapdem-replicate-study");
+  return dir.path();
 }
 app::StudyOptions options() {
   app::StudyOptions o;
@@ -262,8 +263,6 @@ void ARunWhoseSnapshotsAreGoneIsReportedFromItsStoredAnalysis() {
 // One study, run once (each check below would otherwise run it again: gtest_discover_tests runs
 // every test in a process of its own), then checked, then called a second time.
 TEST(ReplicateStudy, TwoCasesTwoSeedsAndTheElementTest) {
-  fs::remove_all(study_dir());
-  fs::create_directories(study_dir());
   std::ofstream(study_dir() / "study.toml") << kStudy;
   ASSERT_EQ(app::run_study(options()), 0);
   {
@@ -290,5 +289,4 @@ TEST(ReplicateStudy, TwoCasesTwoSeedsAndTheElementTest) {
     SCOPED_TRACE("ARunWhoseSnapshotsAreGoneIsReportedFromItsStoredAnalysis");
     ARunWhoseSnapshotsAreGoneIsReportedFromItsStoredAnalysis();
   }
-  fs::remove_all(study_dir());
 }

@@ -27,9 +27,9 @@ TEST(SinkholeCommand, TableAndJson) {
 }
 
 TEST(SinkholeCommand, FromRun) {
-  const fs::path dir = test::sinkhole_run_folder("command");
+  const test::ScratchDir dir = test::sinkhole_run_folder("command");
   app::SinkholeOptions o;
-  o.from = dir.string();
+  o.from = dir.path().string();
   EXPECT_THROW(app::sinkhole_report(o), InputError);  // no angle: required
   o.layers = {"5:30"};
   EXPECT_THROW(app::sinkhole_report(o), InputError);  // thickness comes from the run
@@ -43,16 +43,15 @@ TEST(SinkholeCommand, FromRun) {
   const Json j = Json::parse(app::sinkhole_report(o));
   EXPECT_NEAR(j["mechanism"]["surface_diameter_m"].as_number(), 8.0, 1e-12);
   EXPECT_NEAR(j["ratio_supposition_over_mechanism"].as_number(), (2.0 + 12.8 * test::kTan30) / 8.0, 1e-9);
-  fs::remove_all(dir);
 }
 
 // The analysis' side-wall warning travels with the run's estimate: a zone bounded by the box gives a
 // DEM sinkhole size bounded by the box, and the reader must be told so beside the number.
 TEST(SinkholeCommand, FromRunCarriesTheAnalysisWarnings) {
   const std::string warning = "the zone of influence reaches the left side wall";
-  const fs::path dir = test::sinkhole_run_folder("warning", true, warning);
+  const test::ScratchDir dir = test::sinkhole_run_folder("warning", true, warning);
   app::SinkholeOptions o;
-  o.from = dir.string();
+  o.from = dir.path().string();
   o.layers = {":30"};
   const std::string text = app::sinkhole_report(o);
   EXPECT_NE(text.find("WARNING: " + warning), std::string::npos) << text;
@@ -60,10 +59,8 @@ TEST(SinkholeCommand, FromRunCarriesTheAnalysisWarnings) {
   const Json j = Json::parse(app::sinkhole_report(o));
   ASSERT_EQ(j["model"]["warnings"].size(), 1u);
   EXPECT_EQ(j["model"]["warnings"][0].as_string(), warning);
-  fs::remove_all(dir);
-  const fs::path quiet = test::sinkhole_run_folder("nowarning");
-  o.from = quiet.string();
+  const test::ScratchDir quiet = test::sinkhole_run_folder("nowarning");
+  o.from = quiet.path().string();
   o.json = false;
   EXPECT_EQ(app::sinkhole_report(o).find("WARNING"), std::string::npos);
-  fs::remove_all(quiet);
 }

@@ -5,23 +5,19 @@
 #include <fstream>
 #include <string>
 
+#include "../scratch_dir.hpp"
+
 namespace trapdem::test {
 
 // tan 30 = 1/sqrt(3) = 0.5773502692
 constexpr double kTan30 = 0.5773502691896258;
 
-inline std::filesystem::path fresh_sinkhole_dir(const std::string& name) {
-  const std::filesystem::path dir = std::filesystem::temp_directory_path() / ("trapdem_sinkhole_test_" + name);
-  std::filesystem::remove_all(dir);
-  std::filesystem::create_directories(dir / "analysis");
-  return dir;
-}
-
 // A run folder with only what `sinkhole --from` reads: N = 40, B = 50 mm, fill 150 mm, a surface zone
-// 200 mm wide and bands at 10 and 20 degrees.
-inline std::filesystem::path sinkhole_run_folder(const std::string& name, bool with_surface_height = true,
-                                                 const std::string& warning = "") {
-  const std::filesystem::path dir = fresh_sinkhole_dir(name);
+// 200 mm wide and bands at 10 and 20 degrees; a scratch folder trapdem-sinkhole-NAME-XXXXXX.
+inline ScratchDir sinkhole_run_folder(const std::string& name, bool with_surface_height = true,
+                                      const std::string& warning = "") {
+  ScratchDir dir("trapdem-sinkhole-" + name);
+  std::filesystem::create_directories(dir / "analysis");
   std::ofstream(dir / "resolved.toml") << "name = \"tiny\"\n[spin_up]\ng_level = 40.0\n[trapdoor]\nwidth = 0.05\n"
                                           "[pluviation]\nfill_height = 0.15\n";
   std::ofstream(dir / "analysis" / "metrics.json")

@@ -21,8 +21,8 @@ using namespace trapdem;
 // atan((8 - 2) / (2 x 6.4)) = atan(0.46875) = 25.114 deg; from the bands (10 + 20) / 2 = 15 deg.
 // Supposition at 30 deg: 2 + 2 x 6.4 x tan 30 = 2 + 7.390 = 9.390 m; ratio 9.390 / 8 = 1.1738.
 TEST(SinkholeRun, ScalesSyntheticRun) {
-  const fs::path dir = test::sinkhole_run_folder("scale");
-  const DemRunGeometry run = read_dem_run(dir);
+  const test::ScratchDir dir = test::sinkhole_run_folder("scale");
+  const DemRunGeometry run = read_dem_run(dir.path());
   EXPECT_EQ(run.name, "tiny");
   EXPECT_DOUBLE_EQ(run.g_level, 40.0);
   EXPECT_DOUBLE_EQ(run.soil_height, 0.16);
@@ -38,27 +38,24 @@ TEST(SinkholeRun, ScalesSyntheticRun) {
   EXPECT_NEAR(c.ratio, (2.0 + 12.8 * test::kTan30) / 8.0, 1e-9);
   // The supposition at the angle the surface zone implies gives back the DEM diameter.
   EXPECT_NEAR(compare_with_dem(run, c.angle_from_surface_deg).ratio, 1.0, 1e-9);
-  fs::remove_all(dir);
 }
 
 TEST(SinkholeRun, FallsBackToFillHeight) {
-  const fs::path dir = test::sinkhole_run_folder("fill", false);
-  const DemRunGeometry run = read_dem_run(dir);
+  const test::ScratchDir dir = test::sinkhole_run_folder("fill", false);
+  const DemRunGeometry run = read_dem_run(dir.path());
   EXPECT_DOUBLE_EQ(run.soil_height, 0.15);
   EXPECT_NE(run.soil_height_source.find("fill_height"), std::string::npos);
   EXPECT_NEAR(compare_with_dem(run, 0.0).thickness, 6.0, 1e-12);
-  fs::remove_all(dir);
 }
 
 TEST(SinkholeRun, MissingMetricsSaysAnalyzeFirst) {
-  const fs::path dir = test::sinkhole_run_folder("nometrics");
+  const test::ScratchDir dir = test::sinkhole_run_folder("nometrics");
   fs::remove(dir / "analysis" / "metrics.json");
   try {
-    read_dem_run(dir);
+    read_dem_run(dir.path());
     FAIL();
   } catch (const InputError& e) {
     EXPECT_NE(std::string(e.what()).find("trapdem analyze"), std::string::npos) << e.what();
   }
-  fs::remove_all(dir);
 }
 

@@ -3,16 +3,17 @@
 // folder is made by hand: resolved.toml with the trapdoor's travel (3 mm) and a metrics.json with the
 // inputs the analysis writes for 2 mm beads (1.5 x 2.1 mm front depth, half of 2.0 mm grid).
 #include <gtest/gtest.h>
-#include <unistd.h>
 
 #include <filesystem>
 #include <fstream>
 #include <string>
 
 #include "study/stored_analysis.hpp"
+#include "../scratch_dir.hpp"
 
 namespace fs = std::filesystem;
 using namespace trapdem;
+using trapdem::test::ScratchDir;
 
 namespace {
 
@@ -28,9 +29,9 @@ struct Inputs {
   std::string smoothing_diameters = "2";
 };
 
-fs::path run_folder(const Inputs& in) {
-  const fs::path dir = fs::temp_directory_path() / ("trapdem-stored-analysis-" + std::to_string(::getpid()));
-  fs::remove_all(dir);
+// The run folder, made by hand in a scratch folder of its own (removed with the value returned).
+ScratchDir run_folder(const Inputs& in) {
+  ScratchDir dir("trapdem-stored-analysis");
   fs::create_directories(dir / "analysis");
   std::ofstream(dir / "resolved.toml") << "name = \"hand\"\n[box]\nwidth = 0.1\ndepth = 0.01\nheight = 0.1\n"
                                           "[trapdoor]\nwidth = 0.02\ncentre = 0.05\ntravel = 0.003\n";
@@ -46,9 +47,8 @@ fs::path run_folder(const Inputs& in) {
 }
 
 std::string refusal(const Inputs& in) {
-  const fs::path dir = run_folder(in);
-  const StoredAnalysis s = stored_final_analysis(RunFolder(dir));
-  fs::remove_all(dir);
+  const ScratchDir dir = run_folder(in);
+  const StoredAnalysis s = stored_final_analysis(RunFolder(dir.path()));
   EXPECT_FALSE(s.metrics.has_value()) << s.note;
   return s.note;
 }
@@ -56,18 +56,19 @@ std::string refusal(const Inputs& in) {
 }  // namespace
 
 TEST(StoredAnalysis, TheReportsOwnAnalysisIsTakenAndSaysWhereTheNumbersCameFrom) {
-  const fs::path dir = run_folder(Inputs{});
+  const ScratchDir scratch = run_folder(Inputs{});
+  const fs::path& dir = scratch.path();
   const StoredAnalysis s = stored_final_analysis(RunFolder(dir));
   ASSERT_TRUE(s.metrics.has_value()) << s.note;
   EXPECT_EQ((*s.metrics)["zone_of_influence"]["surface_width_m"].as_number(), 0.04);
   EXPECT_EQ(s.note, "no figures: snapshots.h5 is gone; the numbers are from " + (dir / "analysis" / "metrics.json").string());
-  fs::remove_all(dir);
 }
 
 // A study's report names the files from the study folder: a published report is read elsewhere.
 // A folder that does not hold the run leaves the names as they are.
 TEST(StoredAnalysis, TheNoteNamesFilesFromTheFolderItIsGiven) {
-  const fs::path dir = run_folder(Inputs{});
+  const ScratchDir scratch = run_folder(Inputs{});
+  const fs::path& dir = scratch.path();
   std::ofstream(dir / "analysis" / "shear_strain.png") << "png";
   StoredAnalysis s = stored_final_analysis(RunFolder(dir), dir.parent_path());
   ASSERT_TRUE(s.metrics.has_value()) << s.note;
@@ -77,14 +78,14 @@ TEST(StoredAnalysis, TheNoteNamesFilesFromTheFolderItIsGiven) {
   s = stored_final_analysis(RunFolder(dir), dir / "elsewhere");
   EXPECT_NE(s.note.find("the numbers are from " + (dir / "analysis" / "metrics.json").string()), std::string::npos)
       << s.note;
-  fs::remove_all(dir);
 }
 
 // The figures `trapdem analyze` drew with the metrics are the run's only pictures once its snapshots
 // are gone: found as a page shows them (PNG, else SVG; a PDF is no image for a page), and named in
 // the note.
 TEST(StoredAnalysis, TheRunsOwnFiguresAreFoundBesideItsMetrics) {
-  const fs::path dir = run_folder(Inputs{});
+  const ScratchDir scratch = run_folder(Inputs{});
+  const fs::path& dir = scratch.path();
   const fs::path analysis = dir / "analysis";
   std::ofstream(analysis / "shear_strain.svg") << "<svg/>";
   std::ofstream(analysis / "shear_strain.png") << "png";
@@ -103,7 +104,6 @@ TEST(StoredAnalysis, TheRunsOwnFiguresAreFoundBesideItsMetrics) {
   EXPECT_TRUE(s.strain_figure.empty());
   EXPECT_TRUE(s.displacement_figure.empty());
   EXPECT_EQ(s.note.rfind("no figures: ", 0), 0u) << s.note;
-  fs::remove_all(dir);
 }
 
 TEST(StoredAnalysis, AnyOtherAnalysisIsRefusedNamingTheKey) {
@@ -131,13 +131,14 @@ TEST(StoredAnalysis, AnyOtherAnalysisIsRefusedNamingTheKey) {
   }
   Inputs within;  // the analysis' own tolerance: 2 % of 3 mm
   within.at_m = "0.00306";
-  const fs::path dir = run_folder(within);
+  const ScratchDir scratch = run_folder(within);
+  const fs::path& dir = scratch.path();
   EXPECT_TRUE(stored_final_analysis(RunFolder(dir)).metrics.has_value());
-  fs::remove_all(dir);
 }
 
 TEST(StoredAnalysis, AMissingOrBrokenFileIsANoteNotACrash) {
-  fs::path dir = run_folder(Inputs{});
+  const ScratchDir scratch = run_folder(Inputs{});
+  const fs::path& dir = scratch.path();
   const fs::path metrics = dir / "analysis" / "metrics.json";
   std::ofstream(metrics) << "{\"inputs\": ";
   StoredAnalysis s = stored_final_analysis(RunFolder(dir));
@@ -147,5 +148,4 @@ TEST(StoredAnalysis, AMissingOrBrokenFileIsANoteNotACrash) {
   s = stored_final_analysis(RunFolder(dir));
   EXPECT_FALSE(s.metrics.has_value());
   EXPECT_EQ(s.note, "not analysed: snapshots.h5 is missing and so is " + metrics.string());
-  fs::remove_all(dir);
 }

@@ -13,6 +13,7 @@
 #include "study/study_definition.hpp"
 #include "study_file.hpp"
 #include "study/study_runner.hpp"
+#include "../scratch_dir.hpp"
 
 namespace fs = std::filesystem;
 using namespace trapdem;
@@ -214,8 +215,8 @@ TEST(StudyDefinition, TheSeedLawStudyIsThePaperStudyWithBlazeDemsLaw) {
 // the case's runs get the path absolute, and the packing read is the study folder's (3 spheres,
 // not the working folder's 2).
 TEST(StudyDefinition, RelativePackingUnderSetIsTheStudyFilesFolder) {
-  const fs::path dir = fs::temp_directory_path() / ("trapdem-study-packing-" + std::to_string(::getpid()));
-  fs::remove_all(dir);
+  const test::ScratchDir scratch("trapdem-study-packing");
+  const fs::path& dir = scratch.path();
   fs::create_directories(dir / "studies");
   fs::create_directories(dir / "work");
   auto dump = [](const fs::path& path, int count) {
@@ -244,5 +245,4 @@ TEST(StudyDefinition, RelativePackingUnderSetIsTheStudyFilesFolder) {
     throw;
   }
   fs::current_path(before);
-  fs::remove_all(dir);
 }

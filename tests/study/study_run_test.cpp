@@ -16,6 +16,7 @@
 #include <filesystem>
 #include <fstream>
 #include <functional>
+#include <optional>
 #include <regex>
 #include <thread>
 
@@ -24,11 +25,13 @@
 #include "io/text_file.hpp"
 #include "study_command.hpp"
 #include "tiny_study.hpp"
+#include "../scratch_dir.hpp"
 
 extern char** environ;
 
 namespace fs = std::filesystem;
 using namespace trapdem;
+using trapdem::test::ScratchDir;
 
 namespace {
 
@@ -37,13 +40,6 @@ namespace {
 const std::string kStudy = "name = \"tiny-pair\"\ndescription = \"Two tiny cases, smooth and rough grains\"\n" +
                            test::tiny_scale("the tiny preset, a shallow pour and 3 mm of travel") +
                            test::three_mm_of_travel + "[report]\ncontours_at = 0.002\n" + test::smooth_and_rough_cases;
-
-fs::path scratch(const std::string& name) {
-  const fs::path dir = fs::temp_directory_path() / ("trapdem-study-" + name + "-" + std::to_string(::getpid()));
-  fs::remove_all(dir);
-  fs::create_directories(dir);
-  return dir;
-}
 
 fs::path write_study_file(const fs::path& dir, const std::string& text = kStudy) {
   const fs::path file = dir / "study.toml";
@@ -86,18 +82,15 @@ std::string numbers_without_cost(const Json& summary) {
 class StudyRun : public ::testing::Test {
  protected:
   static void SetUpTestSuite() {
-    dir_ = new fs::path(scratch("straight"));
-    const app::StudyOptions o = one_thread_study(write_study_file(*dir_), *dir_ / "out");
+    dir_.emplace("trapdem-study-straight");
+    const app::StudyOptions o = one_thread_study(write_study_file(dir_->path()), *dir_ / "out");
     ASSERT_EQ(app::run_study(o), 0);
   }
-  static void TearDownTestSuite() {
-    fs::remove_all(*dir_);
-    delete dir_;
-  }
+  static void TearDownTestSuite() { dir_.reset(); }
   static fs::path out() { return *dir_ / "out"; }
-  static fs::path* dir_;
+  static std::optional<ScratchDir> dir_;
 };
-fs::path* StudyRun::dir_ = nullptr;
+std::optional<ScratchDir> StudyRun::dir_;
 
 struct BrowserResult {
   int exit_code = -1;
@@ -122,7 +115,8 @@ BrowserResult open_in_chromium(const fs::path& page, const std::string& extra_sc
   html.insert(body_end, checker);
   const fs::path copy = page.parent_path() / ".browser-check.html";
   std::ofstream(copy) << html;
-  const fs::path profile = scratch("chromium-profile");
+  const ScratchDir scratch("trapdem-study-chromium-profile");
+  const fs::path& profile = scratch.path();
   const fs::path dom = profile / "dom.html", log = profile / "stderr.txt";
   const std::string command = "timeout 120 chromium --headless --no-sandbox --disable-gpu --no-first-run "
                               "--user-data-dir=" + profile.string() +
@@ -139,7 +133,6 @@ BrowserResult open_in_chromium(const fs::path& page, const std::string& extra_sc
   for (std::string line; std::getline(lines, line);)
     if (line.find(":CONSOLE") != std::string::npos) r.console.push_back(line);
   fs::remove(copy);
-  fs::remove_all(profile);
   return r;
 }
 
@@ -244,12 +237,13 @@ TEST_F(StudyRun, PageOpensInHeadlessChromiumWithoutMissingImagesOrConsoleErrors)
 TEST_F(StudyRun, ReportFiguresInSvgAndPdf) {
   ASSERT_TRUE(chromium_installed()) << "chromium (Debian package) is needed: scripts/install-deps installs it";
   for (const std::string format : {"svg", "pdf"}) {
-    const fs::path dir = scratch("format-" + format), out = dir / "out", report = out / "report";
+    const ScratchDir dir("trapdem-study-format-" + format);
+    const fs::path out = dir / "out", report = out / "report";
     fs::copy(StudyRun::out(), out, fs::copy_options::recursive);
     fs::remove_all(report);
     for (const char* c : {"smooth", "rough"}) fs::remove_all(out / "cases" / c / "analysis");
     app::StudyOptions o;
-    o.file = write_study_file(dir).string();
+    o.file = write_study_file(dir.path()).string();
     o.out = out.string();
     o.quiet = true;
     o.report_only = true;
@@ -282,7 +276,6 @@ TEST_F(StudyRun, ReportFiguresInSvgAndPdf) {
     EXPECT_EQ(shown.exit_code, 0);
     EXPECT_EQ(shown.images, 4);
     EXPECT_EQ(shown.broken_images, "") << format;
-    fs::remove_all(dir);
   }
   app::StudyOptions eps;
   eps.file = (StudyRun::out().parent_path() / "study.toml").string();
@@ -293,7 +286,8 @@ TEST_F(StudyRun, ReportFiguresInSvgAndPdf) {
 }
 
 TEST_F(StudyRun, KilledDuringTheSecondCaseAndStartedAgainGivesTheSameReport) {
-  const fs::path dir = scratch("killed");
+  const ScratchDir scratch("trapdem-study-killed");
+  const fs::path& dir = scratch.path();
   const fs::path file = write_study_file(dir), out = dir / "out";
   const std::string executable = TRAPDEM_EXECUTABLE;
   std::vector<std::string> args = {executable, "study", file.string(), "--out", out.string(), "--threads", "1",
@@ -332,13 +326,13 @@ TEST_F(StudyRun, KilledDuringTheSecondCaseAndStartedAgainGivesTheSameReport) {
   EXPECT_EQ(summary_of(out)["cases"][1]["cost"]["segments"].as_number(), 2.0);
   EXPECT_EQ(summary_of(out)["cases"][1]["cost"]["particle_steps"].as_number(),
             summary_of(StudyRun::out())["cases"][1]["cost"]["particle_steps"].as_number());
-  fs::remove_all(dir);
 }
 
 TEST_F(StudyRun, ACaseWhoseConfigurationChangedIsRefused) {
   std::string text = kStudy;
   text.replace(text.find("kinetic_friction = 0.6"), 22, "kinetic_friction = 0.7");
-  const fs::path dir = scratch("changed");
+  const ScratchDir scratch("trapdem-study-changed");
+  const fs::path& dir = scratch.path();
   const app::StudyOptions o = one_thread_study(write_study_file(dir, text), out());
   try {
     app::run_study(o);
@@ -348,7 +342,6 @@ TEST_F(StudyRun, ACaseWhoseConfigurationChangedIsRefused) {
     EXPECT_NE(what.find("another configuration than case 'rough'"), std::string::npos) << what;
     EXPECT_NE(what.find("kinetic_friction"), std::string::npos) << what;
   }
-  fs::remove_all(dir);
 }
 
 // A finished study's folder copied, with `edit` applied to the smooth case's resolved.toml: what
@@ -373,7 +366,8 @@ void erase_line(std::string& text, const std::string& line) {
 // A key added to trapdem since the run (absent from its resolved.toml, at its default now) and
 // another description: the same run, skipped as finished.
 TEST_F(StudyRun, AFinishedRunWithoutANewKeyOrWithAnotherDescriptionIsKept) {
-  const fs::path dir = scratch("older");
+  const ScratchDir scratch("trapdem-study-older");
+  const fs::path& dir = scratch.path();
   const fs::path copy = copy_with_edited_smooth_case(out(), dir, [](std::string& text) {
     erase_line(text, "poisson_ratio = 0.3");  // tiny leaves it at its default
     const std::size_t at = text.find("\ndescription = ");
@@ -385,7 +379,6 @@ TEST_F(StudyRun, AFinishedRunWithoutANewKeyOrWithAnotherDescriptionIsKept) {
   const std::string log = read_text_file(copy / "study.log");
   EXPECT_NE(log.find("[1/2] smooth: finished before, skipped"), std::string::npos) << log;
   EXPECT_NE(log.find("[2/2] rough: finished before, skipped"), std::string::npos) << log;
-  fs::remove_all(dir);
 }
 
 // A value that differs, or a key this trapdem does not read (one removed since): refused, named.
@@ -397,7 +390,8 @@ TEST_F(StudyRun, AFinishedRunWithAnotherValueOrAnUnknownKeyIsRefused) {
        "unknown key contact.retired_key"},
   };
   for (const auto& [edit, expected] : edits) {
-    const fs::path dir = scratch("older-refused");
+    const ScratchDir scratch("trapdem-study-older-refused");
+    const fs::path& dir = scratch.path();
     const fs::path copy = copy_with_edited_smooth_case(out(), dir, edit);
     const app::StudyOptions o = one_thread_study(write_study_file(dir), copy);
     try {
@@ -408,14 +402,14 @@ TEST_F(StudyRun, AFinishedRunWithAnotherValueOrAnUnknownKeyIsRefused) {
       EXPECT_NE(what.find("another configuration than case 'smooth'"), std::string::npos) << what;
       EXPECT_NE(what.find(expected), std::string::npos) << what;
     }
-    fs::remove_all(dir);
   }
 }
 
 TEST_F(StudyRun, AnotherScaleInTheSameFolderIsRefused) {
   std::string text = kStudy;
   text = std::regex_replace(text, std::regex("scales\\.test"), "scales.other");
-  const fs::path dir = scratch("scale");
+  const ScratchDir scratch("trapdem-study-scale");
+  const fs::path& dir = scratch.path();
   app::StudyOptions o;
   o.file = write_study_file(dir, text).string();
   o.out = out().string();
@@ -426,5 +420,4 @@ TEST_F(StudyRun, AnotherScaleInTheSameFolderIsRefused) {
   } catch (const InputError& e) {
     EXPECT_NE(std::string(e.what()).find("holds study 'tiny-pair' at scale 'test'"), std::string::npos) << e.what();
   }
-  fs::remove_all(dir);
 }

@@ -33,7 +33,7 @@ def write_run(root, case, seed, phi, overlap, stress, base_left, complete=True):
 
 def main():
     script = os.path.join(sys.argv[1], "compare.py")
-    with tempfile.TemporaryDirectory() as root:
+    with tempfile.TemporaryDirectory(prefix="trapdem-validation-compare-") as root:
         os.makedirs(os.path.join(root, "report"))
         rows = [HEADER,
                 # reference: left angles 2, 4 (mean 3, sd 1.414); final loads 0.60, 0.61 (sd 0.00707)

@@ -15,11 +15,12 @@
 #include <string>
 #include <vector>
 
-#include <unistd.h>
+#include "../../scratch_dir.hpp"
 
 namespace {
 
 namespace fs = std::filesystem;
+using trapdem::test::ScratchDir;
 
 std::string read_text(const fs::path& p) {
   std::ifstream in(p);
@@ -72,14 +73,12 @@ double json_number(const std::string& text, const std::vector<std::string>& path
 }
 
 TEST(DemoPipelineSlow, RunAndAnalyzeShowArchingShearBandsAndAZoneOfInfluence) {
-  const fs::path dir = fs::temp_directory_path() / ("trapdem-demo-pipeline-" + std::to_string(::getpid()));
-  fs::remove_all(dir);
-  fs::create_directories(dir);
+  const ScratchDir dir("trapdem-demo-pipeline");
   // TRAPDEM_DEMO_RUN=FOLDER checks a demo run made and analysed before (e.g. `make demo`'s
   // trapdem-out/demo) instead of making one.
   const char* given = std::getenv("TRAPDEM_DEMO_RUN");
   const fs::path run = given ? fs::path(given) : dir / "demo";
-  SCOPED_TRACE("run folder " + run.string() + " (kept when the test fails)");
+  SCOPED_TRACE("run folder " + run.string() + " (TRAPDEM_KEEP_SCRATCH=1 keeps it)");
   if (!given) {
     ASSERT_EQ(trapdem("run --preset demo --quiet --out '" + run.string() + "'", dir / "run.out"), 0)
         << read_text(dir / "run.out");
@@ -148,7 +147,6 @@ TEST(DemoPipelineSlow, RunAndAnalyzeShowArchingShearBandsAndAZoneOfInfluence) {
   EXPECT_GT(right_height, 3.0);
   EXPECT_GT(zone_surface, 2.5);
   EXPECT_LE(zone_surface, 5.0);
-  fs::remove_all(dir);
 }
 
 }  // namespace
