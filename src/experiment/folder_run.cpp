@@ -98,9 +98,10 @@ void check_resume_options(const FolderRunOptions& o) {
                                    o.allowed_changes.front()));
     return;
   }
-  if (!o.config_file.empty())
+  if (!o.config_file.empty() || !o.config_text.empty())
     throw InputError(fmt::format("--resume {} carries on the run with the folder's resolved.toml: give no configuration "
-                                 "file or --preset with it ({})", o.resume_dir.string(), o.config_file.string()));
+                                 "file or --preset with it ({})", o.resume_dir.string(),
+                                 o.config_text.empty() ? o.config_file.string() : o.config_name));
   for (const std::string& assignment : o.overrides)
     if (!allowed(o, override_key(assignment)))
       throw InputError(fmt::format("--set {}: --resume carries on the run that was started, with its configuration; to "
@@ -271,7 +272,7 @@ bool run_logged(const FolderRunOptions& o, std::optional<RunLog>& log) {
       }
       loaded = Config::load_file(folder.resolved_toml().string());
     } else {
-      loaded = Config::load_file(o.config_file.string());
+      loaded = o.config_text.empty() ? Config::load_file(o.config_file.string()) : Config::parse(o.config_text, o.config_name);
     }
   });
   if (ranks) restart = ranks->broadcast(restart);

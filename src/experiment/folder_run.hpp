@@ -13,6 +13,10 @@ class RunRanks;  // run_ranks.hpp
 
 struct FolderRunOptions {
   std::filesystem::path config_file;    // the configuration (TOML) to run; must be empty with resume_dir
+  // Or the configuration as TOML text (from Python: a dict or a string), named `config_name` in
+  // messages ("<dict>"); relative paths in it are taken from the working folder.
+  std::string config_text;
+  std::string config_name = "<configuration>";
   std::vector<std::string> overrides;   // "key.path=value", applied on top (with resume_dir: allowed_changes only)
   std::vector<std::string> allowed_changes;  // with resume_dir: keys that may differ from the run started
   std::filesystem::path out_dir;        // empty: ./trapdem-out/<name>

@@ -2,7 +2,9 @@
 # make install's result: installs the build into a temporary prefix (cmake --install, as the
 # Makefile's install target does), then runs the installed program from outside the checkout with
 # a PATH and environment that know nothing of the build: `trapdem --help`, and `trapdem presets`
-# finding its presets in PREFIX/share/trapdem/presets (a preset added only there must be listed).
+# finding its presets in PREFIX/share/trapdem/presets (a preset added only there must be listed);
+# and, with the Python module built, `import trapdem` from PREFIX/lib/python3/dist-packages in a
+# fresh Debian python3 that finds the installed presets too.
 # Usage: install_test.sh BUILD_DIR
 set -euo pipefail
 build=$(cd "$1" && pwd)
@@ -22,4 +24,12 @@ grep -q "run" <<< "$help" || { echo "trapdem --help: unexpected output"; echo "$
 presets=$(trapdem presets)
 grep -q "^only-installed " <<< "$presets" || { echo "trapdem presets does not read $prefix/share/trapdem/presets:"; echo "$presets"; exit 1; }
 grep -q "^tiny " <<< "$presets" || { echo "trapdem presets: no tiny"; echo "$presets"; exit 1; }
-echo "installed in $prefix: trapdem --help and trapdem presets work from there"
+if [ -f "$build/python/trapdem/__init__.py" ]; then
+  site="$prefix/lib/python3/dist-packages"
+  test -f "$site/trapdem/__init__.py" || { echo "no $site/trapdem after install"; exit 1; }
+  names=$(env -i PATH=/usr/bin:/bin PYTHONPATH="$site" /usr/bin/python3 -c \
+    'import trapdem; print(trapdem.__file__); print(" ".join(trapdem.presets()))')
+  grep -q "^$site/trapdem/__init__.py$" <<< "$names" || { echo "import trapdem did not take the installed package:"; echo "$names"; exit 1; }
+  grep -qw "only-installed" <<< "$names" || { echo "trapdem.presets() does not read $prefix/share/trapdem/presets:"; echo "$names"; exit 1; }
+fi
+echo "installed in $prefix: trapdem --help and trapdem presets work from there (and import trapdem, when built)"

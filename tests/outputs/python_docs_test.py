@@ -2,6 +2,8 @@
 # paste them into one session, with the working directory holding trapdem-out/demo (a link to the
 # run folder the test fixture made). Fails on the first block that raises, naming it, and when a
 # figure the blocks save is missing or not a PNG. Usage: python3 python_docs_test.py DOC.md RUN_DIR
+# [--without-the-module]: then only the blocks after the heading "# Reading the files without the
+# module" (a build without the Python module: they need h5py, pandas and matplotlib only).
 import os
 import re
 import sys
@@ -10,6 +12,13 @@ import traceback
 
 doc, run = sys.argv[1], os.path.abspath(sys.argv[2])
 text = open(doc, encoding="utf-8").read()
+if sys.argv[3:] == ["--without-the-module"]:
+    heading = "\n# Reading the files without the module\n"
+    if heading not in text:
+        sys.exit(f"{doc}: no heading '{heading.strip()}'")
+    text = text[text.index(heading):]
+elif sys.argv[3:]:
+    sys.exit("usage: python_docs_test.py DOC.md RUN_DIR [--without-the-module]")
 blocks = re.findall(r"^```python\n(.*?)^```", text, flags=re.S | re.M)
 if len(blocks) < 5:
     sys.exit(f"{doc}: only {len(blocks)} python blocks found; the pattern or the document changed")

@@ -1,0 +1,207 @@
+// trapdem from Python (issue 40): the library's workflows as calls, the GIL released while they run.
+// The Python package (python/trapdem/__init__.py) wraps these in the names users call; this module
+// (_trapdem) only converts: options in, plain values and numpy arrays out, the library's errors as
+// Python exceptions (InputError -> ValueError, FileError -> OSError, SimulationError -> RuntimeError).
+#include <pybind11/numpy.h>
+#include <pybind11/pybind11.h>
+#include <pybind11/stl.h>
+#include <pybind11/stl/filesystem.h>
+
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "analysis/analysis_output.hpp"
+#include "core/errors.hpp"
+#include "experiment/folder_run.hpp"
+#include "piv/piv_folder.hpp"
+#include "piv/synthetic_sequence.hpp"
+#include "study/element_folder.hpp"
+#include "study/run_analysis.hpp"
+
+namespace py = pybind11;
+namespace fs = std::filesystem;
+using namespace trapdem;
+
+namespace {
+
+// A numpy array that owns a copy of `values` laid out as `shape` (row-major).
+py::array_t<double> array_of(const std::vector<double>& values, std::vector<py::ssize_t> shape) {
+  py::array_t<double> a(shape);
+  std::copy(values.begin(), values.end(), a.mutable_data());
+  return a;
+}
+
+py::array_t<double> points_array(const std::vector<Point2>& points) {
+  std::vector<double> flat;
+  flat.reserve(2 * points.size());
+  for (const Point2& p : points) {
+    flat.push_back(p.x);
+    flat.push_back(p.z);
+  }
+  return array_of(flat, {py::ssize_t(points.size()), 2});
+}
+
+bool run(const std::string& config_text, const std::string& config_name, const std::string& config_file,
+         const std::vector<std::string>& overrides, const std::string& out, const std::string& resume,
+         const std::vector<std::string>& allowed_changes, int threads, bool quiet, double stop_after_seconds) {
+  FolderRunOptions o;
+  o.config_text = config_text;
+  o.config_name = config_name;
+  o.config_file = config_file;
+  o.overrides = overrides;
+  o.out_dir = out;
+  o.resume_dir = resume;
+  o.allowed_changes = allowed_changes;
+  o.threads = threads;
+  o.quiet = quiet;
+  o.stop_after_seconds = stop_after_seconds;
+  py::gil_scoped_release release;  // the run's own SIGINT handler stops it with a checkpoint
+  return run_in_folder(o);
+}
+
+py::dict analyze(const std::string& dir, const std::string& at, const std::string& reference, const std::string& view,
+                 bool incremental, double smoothing, bool write, bool figures, const std::string& format) {
+  AnalyzeOptions a;
+  a.dir = dir;
+  a.at = at;
+  a.reference = reference;
+  a.view = view;
+  a.incremental = incremental;
+  a.smoothing = smoothing;
+  a.no_figures = !figures;
+  a.format = format;
+  a.quiet = true;
+  AnalysisResult r;
+  std::vector<fs::path> written;
+  {
+    py::gil_scoped_release release;
+    r = write ? analyze_and_write(a, &written) : analyze_directory(a);
+  }
+  py::dict d;
+  d["metrics_json"] = metrics_json(r).dump();
+  d["ids"] = py::array_t<std::int64_t>(py::ssize_t(r.id.size()), r.id.data());
+  d["reference_positions"] = points_array(r.points.position);
+  d["displacements"] = points_array(r.points.displacement);
+  std::vector<std::int64_t> triangles;
+  for (const auto& t : r.mesh.mesh.triangles)
+    for (std::size_t c : t) triangles.push_back(std::int64_t(c));
+  d["triangles"] = py::array_t<std::int64_t>({py::ssize_t(r.mesh.mesh.size()), py::ssize_t(3)}, triangles.data());
+  d["gamma_max"] = array_of(r.gamma_max, {py::ssize_t(r.gamma_max.size())});
+  d["gamma_max_smoothed"] = array_of(r.gamma_max_smoothed, {py::ssize_t(r.gamma_max_smoothed.size())});
+  d["volumetric"] = array_of(r.volumetric, {py::ssize_t(r.volumetric.size())});
+  const GridField& w = r.vertical_displacement;
+  d["settlement_grid"] = array_of(w.value, {py::ssize_t(w.grid.nz), py::ssize_t(w.grid.nx)});
+  d["grid_x0"] = w.grid.x0;
+  d["grid_z0"] = w.grid.z0;
+  d["grid_spacing"] = w.grid.spacing;
+  std::vector<std::string> files;
+  for (const fs::path& f : written) files.push_back(f.string());
+  d["written"] = files;
+  return d;
+}
+
+py::dict element(const std::string& config_file, const std::vector<std::string>& overrides, const std::string& out,
+                 int threads) {
+  ElementFolderOptions o;
+  o.config_file = config_file;
+  o.overrides = overrides;
+  o.out_dir = out;
+  o.threads = threads;
+  ElementFolderResult r;
+  {
+    py::gil_scoped_release release;
+    r = run_element_in_folder(o);
+  }
+  py::list angles;
+  for (const ElementAngles& a : r.angles) {
+    py::dict one;
+    one["confining_pa"] = a.confining;
+    one["phi_peak_deg"] = a.phi_peak;
+    one["phi_cs_deg"] = a.phi_cs;
+    one["phi_cs_gap_deg"] = a.phi_cs_gap;
+    angles.append(one);
+  }
+  py::dict d;
+  d["out"] = r.out.string();
+  d["angles"] = angles;
+  return d;
+}
+
+py::dict piv(const std::vector<std::string>& images, const std::string& out, int subset, int step, int threads,
+             std::optional<double> scale, std::vector<double> origin, bool figures) {
+  PivFolderOptions o;
+  o.images.assign(images.begin(), images.end());
+  o.out = out;
+  o.settings.subset_size = subset;
+  o.settings.step = step;
+  o.settings.threads = threads;
+  o.scale_mm_per_px = scale;
+  if (origin.size() == 2) o.origin_mm = {origin[0], origin[1]};
+  else if (!origin.empty()) throw InputError("origin: two numbers, x and z of pixel (0, 0) in mm");
+  o.figures = figures;
+  PivFolderResult r;
+  {
+    py::gil_scoped_release release;
+    r = run_piv_into_folder(o);
+  }
+  // u, v (px, image axes) and the correlation of every subset of every image: (images, subsets).
+  const std::size_t n = r.result.image_count(), m = r.subsets;
+  std::vector<double> x(m), y(m), u(n * m), v(n * m), zncc(n * m);
+  for (std::size_t k = 0; k < n; ++k)
+    for (std::size_t s = 0; s < m && s < r.result.image[k].subset.size(); ++s) {
+      const SubsetMeasurement& q = r.result.image[k].subset[s];
+      u[k * m + s] = q.u;
+      v[k * m + s] = q.v;
+      zncc[k * m + s] = q.zncc;
+    }
+  for (std::size_t s = 0; s < m; ++s) {
+    x[s] = r.result.grid.centre[s].x;
+    y[s] = r.result.grid.centre[s].y;
+  }
+  py::dict d;
+  d["x_px"] = array_of(x, {py::ssize_t(m)});
+  d["y_px"] = array_of(y, {py::ssize_t(m)});
+  d["u_px"] = array_of(u, {py::ssize_t(n), py::ssize_t(m)});
+  d["v_px"] = array_of(v, {py::ssize_t(n), py::ssize_t(m)});
+  d["zncc"] = array_of(zncc, {py::ssize_t(n), py::ssize_t(m)});
+  d["unit"] = r.unit;
+  std::vector<std::string> files;
+  for (const fs::path& f : r.written) files.push_back(f.string());
+  d["written"] = files;
+  return d;
+}
+
+int synth(const std::string& field, const std::string& out, int width, int height, int images, double noise,
+          std::optional<double> magnitude, std::uint64_t seed) {
+  SyntheticSequenceOptions o;
+  o.field = parse_synthetic_field(field, "field");
+  o.out = out;
+  o.width = width;
+  o.height = height;
+  o.images = images;
+  o.noise = noise;
+  o.magnitude = magnitude;
+  o.seed = seed;
+  py::gil_scoped_release release;
+  return write_synthetic_sequence(o).images;
+}
+
+}  // namespace
+
+PYBIND11_MODULE(_trapdem, m) {
+  m.doc() = "trapdem's library calls (use the trapdem package, which wraps them)";
+  py::register_exception<InputError>(m, "InputError", PyExc_ValueError);
+  py::register_exception<FileError>(m, "FileError", PyExc_OSError);
+  py::register_exception<SimulationError>(m, "SimulationError", PyExc_RuntimeError);
+  m.def("run", &run, py::arg("config_text"), py::arg("config_name"), py::arg("config_file"), py::arg("overrides"),
+        py::arg("out"), py::arg("resume"), py::arg("allowed_changes"), py::arg("threads"), py::arg("quiet"),
+        py::arg("stop_after_seconds"));
+  m.def("analyze", &analyze, py::arg("dir"), py::arg("at"), py::arg("reference"), py::arg("view"),
+        py::arg("incremental"), py::arg("smoothing"), py::arg("write"), py::arg("figures"), py::arg("format"));
+  m.def("element", &element, py::arg("config_file"), py::arg("overrides"), py::arg("out"), py::arg("threads"));
+  m.def("piv", &piv, py::arg("images"), py::arg("out"), py::arg("subset"), py::arg("step"), py::arg("threads"),
+        py::arg("scale"), py::arg("origin"), py::arg("figures"));
+  m.def("synth", &synth, py::arg("field"), py::arg("out"), py::arg("width"), py::arg("height"), py::arg("images"),
+        py::arg("noise"), py::arg("magnitude"), py::arg("seed"));
+}

@@ -1,0 +1,143 @@
+"""The Python module (python/trapdem, issue 40) against the program it wraps: the same run from a
+dict as from the command line (byte for byte), the strict reader's errors raised with the key,
+a run folder read, the analysis equal to `trapdem analyze`'s metrics.json, PIV on synthetic
+images, Ctrl-C stopping with a checkpoint and the resume finishing the same run, and two runs in
+one process equal. Run by ctest (python.module) with PYTHONPATH=build/python."""
+import json
+import math
+import os
+import pathlib
+import shutil
+import signal
+import subprocess
+import tempfile
+import threading
+import tomllib
+
+import numpy as np
+import pandas as pd
+import pytest
+
+import trapdem
+
+SOURCE = pathlib.Path(os.environ["TRAPDEM_SOURCE_DIR"])
+PROGRAM = os.environ["TRAPDEM_EXECUTABLE"]
+
+# A tiny run cut short: a 10 mm pour, short settling and spin-up, 0.5 mm of lowering, snapshots at
+# 0 and 0.5 mm (the analysis needs two): about a second on one thread.
+SHORT = {"pluviation": {"fill_height": 0.01}, "settling": {"max_time": 0.01}, "spin_up": {"ramp_time": 0.005},
+         "trapdoor": {"travel": 0.0005}, "output": {"snapshot_displacements": [0.0, 0.0005]}}
+SHORT_SET = ["pluviation.fill_height=0.01", "settling.max_time=0.01", "spin_up.ramp_time=0.005",
+             "trapdoor.travel=0.0005", "output.snapshot_displacements=[0.0, 0.0005]"]
+
+
+def program(*args):
+    subprocess.run([PROGRAM, *map(str, args)], check=True, stdout=subprocess.DEVNULL)
+
+
+@pytest.fixture
+def scratch():
+    folder = pathlib.Path(tempfile.mkdtemp(prefix="trapdem-python-"))
+    yield folder
+    shutil.rmtree(folder, ignore_errors=True)
+
+
+@pytest.fixture(scope="module")
+def short_run():
+    folder = pathlib.Path(tempfile.mkdtemp(prefix="trapdem-python-run-"))
+    yield trapdem.run(SHORT, preset="tiny", out=folder / "run", threads=1)
+    shutil.rmtree(folder, ignore_errors=True)
+
+
+def test_a_run_from_a_dict_is_the_programs_run(scratch, short_run):
+    sets = [a for s in SHORT_SET for a in ("--set", s)]
+    program("run", "--preset", "tiny", "--out", scratch / "cli", "--threads", 1, "--quiet", *sets)
+    expected = (scratch / "cli" / "trapdoor.csv").read_bytes()
+    assert (short_run.path / "trapdoor.csv").read_bytes() == expected
+    # The whole configuration as a dict (the preset read, changed, written back as TOML): the same.
+    with open(SOURCE / "presets" / "tiny.toml", "rb") as f:
+        config = tomllib.load(f)
+    for table, changes in SHORT.items():
+        config[table].update(changes)
+    whole = trapdem.run(config, out=scratch / "dict", threads=1)
+    assert (whole.path / "trapdoor.csv").read_bytes() == expected
+    # And TOML text.
+    text = trapdem.run(trapdem.to_toml(config), out=scratch / "text", threads=1)
+    assert (text.path / "trapdoor.csv").read_bytes() == expected
+
+
+def test_a_bad_key_is_raised_with_the_key_named(scratch):
+    with pytest.raises(trapdem.InputError, match=r"unknown key box\.widht \(did you mean box\.width\?\)"):
+        trapdem.run({"box": {"widht": 0.1}}, preset="tiny", out=scratch / "a")
+    with pytest.raises(ValueError, match=r"pluviation\.fill_height = -1\.0.*expected"):
+        trapdem.run({"pluviation": {"fill_height": -1.0}}, preset="tiny", out=scratch / "b")
+    with open(SOURCE / "presets" / "tiny.toml", "rb") as f:
+        config = tomllib.load(f)
+    config["contact"]["restitution"] = 2.0
+    with pytest.raises(trapdem.InputError, match=r"<dict>.*contact\.restitution = 2.*expected a number in \(0, 1\]"):
+        trapdem.run(config, out=scratch / "c")
+    with pytest.raises(trapdem.InputError, match="preset 'nosuch'"):
+        trapdem.run(preset="nosuch", out=scratch / "d")
+    assert not (scratch / "a" / "checkpoint.h5").exists()
+
+
+def test_a_run_folder_read(short_run):
+    grc = short_run.grc
+    assert isinstance(grc, pd.DataFrame)
+    assert "trapdoor_stress_ratio" in grc.columns and len(grc) > 1
+    assert grc["trapdoor_displacement_m"].iloc[-1] == pytest.approx(0.0005, rel=0.05)
+    assert short_run.run["complete"] is True
+    assert short_run.config["box"]["width"] == 0.08
+    snapshots = short_run.snapshots
+    assert [s["stage"] for s in snapshots][:2] == ["pluviation", "settling"]
+    last = short_run.snapshot(-1)
+    n = snapshots[-1]["particles"]
+    assert last["position"].shape == (n, 3) and last["radius"].shape == (n,)
+    assert np.all(np.diff(last["id"]) > 0)  # sorted by id
+    assert last["stage"] == "lowering"
+
+
+def test_the_analysis_is_the_programs(scratch, short_run):
+    program("analyze", short_run.path, "--out", scratch / "analysis", "--no-figures", "--quiet")
+    expected = json.loads((scratch / "analysis" / "metrics.json").read_text())
+    a = trapdem.analyze(short_run)
+    assert a.metrics == expected
+    assert a.triangles.shape[1] == 3 and len(a.gamma_max) == len(a.triangles) == len(a.volumetric)
+    assert a.reference_positions.shape == a.displacements.shape == (len(a.ids), 2)
+    assert a.metrics["strain"]["gamma_max_max"] == pytest.approx(np.nanmax(a.gamma_max), rel=1e-12)
+    assert a.settlement_grid.ndim == 2
+
+
+def test_piv_on_synthetic_images(scratch):
+    images = trapdem.synth("rigid", scratch / "images", size=(160, 160), images=2)
+    assert all(p.is_file() for p in images) and (scratch / "images" / "truth.csv").is_file()
+    r = trapdem.piv(images, scratch / "piv", threads=1)
+    valid = r["zncc"][1] > 0.9
+    assert valid.sum() > len(r["x_px"]) // 2
+    # The synthetic shift of the last image: (2.5, 1.5) px (src/piv/synthetic_sequence.hpp).
+    assert np.all(np.abs(r["u_px"][1][valid] - 2.5) < 0.05)
+    assert np.all(np.abs(r["v_px"][1][valid] - 1.5) < 0.05)
+    assert (scratch / "piv" / "piv.h5").is_file()
+
+
+def test_ctrl_c_stops_with_a_checkpoint_and_the_resume_finishes_the_same_run(scratch):
+    # The whole tiny preset (several seconds); SIGINT a second in, as Ctrl-C in a notebook.
+    timer = threading.Timer(1.0, os.kill, (os.getpid(), signal.SIGINT))
+    timer.start()
+    with pytest.raises(KeyboardInterrupt, match="resume"):
+        trapdem.run(preset="tiny", out=scratch / "stopped", threads=1)
+    timer.join()
+    assert (scratch / "stopped" / "checkpoint.h5").is_file()
+    assert trapdem.RunFolder(scratch / "stopped").run["complete"] is False
+    finished = trapdem.resume(scratch / "stopped", threads=1)
+    assert finished.run["complete"] is True
+    straight = trapdem.run(preset="tiny", out=scratch / "straight", threads=1)
+    assert (finished.path / "trapdoor.csv").read_bytes() == (straight.path / "trapdoor.csv").read_bytes()
+
+
+def test_two_runs_in_one_process_are_the_same(scratch):
+    # The second run after one on two threads: no state of the first (the thread count above all) leaks.
+    trapdem.run(SHORT, preset="tiny", out=scratch / "two-threads", threads=2)
+    a = trapdem.run(SHORT, preset="tiny", out=scratch / "a", threads=1)
+    b = trapdem.run(SHORT, preset="tiny", out=scratch / "b", threads=1)
+    assert (a.path / "trapdoor.csv").read_bytes() == (b.path / "trapdoor.csv").read_bytes()
