@@ -8,6 +8,8 @@
 #include <pybind11/stl/filesystem.h>
 
 #include <optional>
+
+#include <fmt/format.h>
 #include <string>
 #include <vector>
 
@@ -18,6 +20,8 @@
 #include "piv/synthetic_sequence.hpp"
 #include "study/element_folder.hpp"
 #include "study/run_analysis.hpp"
+#include "study/study_definition.hpp"
+#include "study/study_runner.hpp"
 
 namespace py = pybind11;
 namespace fs = std::filesystem;
@@ -187,6 +191,32 @@ int synth(const std::string& field, const std::string& out, int width, int heigh
   return write_synthetic_sequence(o).images;
 }
 
+// A study (docs/study.md) run, resumed or reported into `out`, as `trapdem study`.
+py::dict study(const std::string& file, const std::string& scale_name, const std::string& out_dir,
+               const std::string& presets, int threads, bool quiet, bool report_only) {
+  const StudyDefinition definition = load_study(file);
+  const StudyScale& scale = definition.scale(scale_name.empty() ? definition.default_scale : scale_name);
+  const fs::path out = out_dir.empty() ? fs::path("trapdem-out") / (definition.name + "-" + scale.name) : fs::path(out_dir);
+  py::dict d;
+  d["out"] = out.string();
+  {
+    py::gil_scoped_release release;
+    if (report_only) {
+      if (!holds_study(out)) throw InputError(fmt::format("report only: {} holds no study", out.string()));
+      claim_study_folder(definition, scale, out);
+    } else if (!run_study_in_folder(definition, scale, out, StudyRunSettings{presets, threads, quiet})) {
+      py::gil_scoped_acquire acquire;
+      d["finished"] = false;
+      return d;
+    }
+    const fs::path page = write_study_outputs(definition, scale, out, quiet, presets);
+    py::gil_scoped_acquire acquire;
+    d["report"] = page.string();
+  }
+  d["finished"] = true;
+  return d;
+}
+
 }  // namespace
 
 PYBIND11_MODULE(_trapdem, m) {
@@ -202,6 +232,8 @@ PYBIND11_MODULE(_trapdem, m) {
   m.def("element", &element, py::arg("config_file"), py::arg("overrides"), py::arg("out"), py::arg("threads"));
   m.def("piv", &piv, py::arg("images"), py::arg("out"), py::arg("subset"), py::arg("step"), py::arg("threads"),
         py::arg("scale"), py::arg("origin"), py::arg("figures"));
+  m.def("study", &study, py::arg("file"), py::arg("scale"), py::arg("out"), py::arg("presets"), py::arg("threads"),
+        py::arg("quiet"), py::arg("report_only"));
   m.def("synth", &synth, py::arg("field"), py::arg("out"), py::arg("width"), py::arg("height"), py::arg("images"),
         py::arg("noise"), py::arg("magnitude"), py::arg("seed"));
 }

@@ -25,7 +25,7 @@ from ._trapdem import FileError, InputError, SimulationError
 
 __all__ = [
     "InputError", "FileError", "SimulationError", "run", "resume", "RunFolder", "Analysis", "analyze",
-    "element", "piv", "synth", "presets", "preset_path", "to_toml",
+    "element", "study", "piv", "synth", "presets", "preset_path", "to_toml",
 ]
 
 _HERE = pathlib.Path(__file__).resolve().parent
@@ -234,6 +234,19 @@ def element(config=None, *, preset: str | None = None, out=None, overrides: Iter
     if isinstance(config, Mapping):
         raise InputError("element: give a configuration file or a preset (with overrides)")
     return _trapdem.element(file, list(overrides), str(out or ""), threads)
+
+
+def study(file, *, scale: str = "", out=None, threads: int = 0, quiet: bool = True, report_only: bool = False) -> dict:
+    """A study (docs/study.md) run, resumed (its finished runs skipped) and reported into `out`
+    (default trapdem-out/<study>-<scale>), as ``trapdem study``: returns the folder, the report's
+    page and its summary (summary.json as a dict). Ctrl-C stops it with its running case's
+    checkpoint and raises KeyboardInterrupt; calling it again carries on."""
+    r = _trapdem.study(str(file), scale, str(out or ""), str(_preset_directory()), threads, quiet, report_only)
+    if not r["finished"]:
+        raise KeyboardInterrupt(f"the study stopped with a checkpoint; call trapdem.study again to carry it on")
+    page = pathlib.Path(r["report"])
+    return {"out": pathlib.Path(r["out"]), "report": page,
+            "summary": json.loads((page.parent / "summary.json").read_text())}
 
 
 def piv(images: Iterable, out, *, subset: int = 32, step: int = 16, threads: int = 0, scale: float | None = None,

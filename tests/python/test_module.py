@@ -141,3 +141,19 @@ def test_two_runs_in_one_process_are_the_same(scratch):
     a = trapdem.run(SHORT, preset="tiny", out=scratch / "a", threads=1)
     b = trapdem.run(SHORT, preset="tiny", out=scratch / "b", threads=1)
     assert (a.path / "trapdoor.csv").read_bytes() == (b.path / "trapdoor.csv").read_bytes()
+
+
+def test_a_study_runs_and_reports(scratch):
+    # One case at one scale, the tiny preset cut short: its run, the report and its summary.
+    definition = scratch / "sweep.toml"
+    definition.write_text(
+        'name = "py"\ndefault_scale = "tiny"\n[scales.tiny]\npreset = "tiny"\n[scales.tiny.set]\n'
+        + "".join(f"{s.split('=')[0]} = {s.split('=', 1)[1]}\n" for s in SHORT_SET)
+        + '[cases.loose]\nlabel = "Loose"\n[cases.loose.set.contact]\nkinetic_friction = 0.3\n'
+        + 'static_friction = 0.3\n')
+    result = trapdem.study(definition, out=scratch / "study", threads=1)
+    assert result["report"].is_file() and result["report"].name == "index.html"
+    assert (scratch / "study" / "cases" / "loose" / "trapdoor.csv").is_file()
+    assert "findings" in result["summary"]
+    again = trapdem.study(definition, out=scratch / "study", threads=1, report_only=True)
+    assert again["report"] == result["report"]
