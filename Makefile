@@ -5,7 +5,8 @@ FUZZ_BUILD ?= build-fuzz
 FUZZ_SECONDS ?= 600
 JOBS ?= $(shell nproc)
 CMAKE_FLAGS ?=
-# make install: the program goes to $(PREFIX)/bin, the presets to $(PREFIX)/share/trapdem/presets.
+# make install: the program goes to $(PREFIX)/bin, the presets to $(PREFIX)/share/trapdem/presets,
+# the Python package to $(PREFIX)/lib/python3/dist-packages/trapdem.
 PREFIX ?= /usr/local
 # ccache, where installed, shares compiled objects between build folders (build, build-asan).
 LAUNCHER := $(if $(shell command -v ccache),-DCMAKE_CXX_COMPILER_LAUNCHER=ccache)
