@@ -81,7 +81,7 @@ int run_study(const StudyOptions& o) {
     claim_study_folder(study, scale, out);
     if (o.collect) {
       // The runs ran elsewhere (a Slurm array); what is left for one process: the element tests.
-      const StudyRunSettings settings{preset_directory(), o.threads, o.quiet};
+      const StudyRunSettings settings{preset_directory(), o.threads, o.quiet, {}};
       checked_study_runs(study, scale, out, settings.preset_directory);
       if (study.report.element_test)
         for (const StudyCase& c : study.cases) run_case_element_test_once(study, c, scale, out, settings);
@@ -91,7 +91,7 @@ int run_study(const StudyOptions& o) {
           log_study_line(out, fmt::format("collect: {} has not finished ({}); the report leaves it out", r.title,
                                           to_string(r.state)), false);
     }
-  } else if (!run_study_in_folder(study, scale, out, StudyRunSettings{preset_directory(), o.threads, o.quiet})) {
+  } else if (!run_study_in_folder(study, scale, out, StudyRunSettings{preset_directory(), o.threads, o.quiet, {}})) {
     return kExitInterrupted;
   }
   const fs::path page = write_study_outputs(study, scale, out, o.quiet, preset_directory(), format);

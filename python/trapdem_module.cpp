@@ -36,6 +36,26 @@ py::array_t<double> array_of(const std::vector<double>& values, std::vector<py::
   return a;
 }
 
+// The terminal of a call from Python: sys.stdout and sys.stderr as they are when a line comes (a
+// notebook's kernel points them at the running cell; the process's file descriptors are not the
+// notebook's). The GIL is taken for each line; a stream that fails to write is reported as
+// unraisable and never stops a run (run.log has every line).
+LineSink python_terminal() {
+  auto writer = [](const char* stream) {
+    return [stream](const std::string& line) {
+      py::gil_scoped_acquire acquire;
+      try {
+        const py::object target = py::module_::import("sys").attr(stream);
+        target.attr("write")(line + "\n");
+        target.attr("flush")();
+      } catch (py::error_already_set& e) {
+        e.discard_as_unraisable(fmt::format("trapdem writing a line to sys.{}", stream).c_str());
+      }
+    };
+  };
+  return LineSink{writer("stdout"), writer("stderr")};
+}
+
 py::array_t<double> points_array(const std::vector<Point2>& points) {
   std::vector<double> flat;
   flat.reserve(2 * points.size());
@@ -59,6 +79,7 @@ bool run(const std::string& config_text, const std::string& config_name, const s
   o.allowed_changes = allowed_changes;
   o.threads = threads;
   o.quiet = quiet;
+  o.terminal = python_terminal();
   o.stop_after_seconds = stop_after_seconds;
   py::gil_scoped_release release;  // the run's own SIGINT handler stops it with a checkpoint
   return run_in_folder(o);
@@ -197,6 +218,7 @@ py::dict study(const std::string& file, const std::string& scale_name, const std
   const StudyDefinition definition = load_study(file);
   const StudyScale& scale = definition.scale(scale_name.empty() ? definition.default_scale : scale_name);
   const fs::path out = out_dir.empty() ? fs::path("trapdem-out") / (definition.name + "-" + scale.name) : fs::path(out_dir);
+  const LineSink terminal = python_terminal();
   py::dict d;
   d["out"] = out.string();
   {
@@ -204,12 +226,12 @@ py::dict study(const std::string& file, const std::string& scale_name, const std
     if (report_only) {
       if (!holds_study(out)) throw InputError(fmt::format("report only: {} holds no study", out.string()));
       claim_study_folder(definition, scale, out);
-    } else if (!run_study_in_folder(definition, scale, out, StudyRunSettings{presets, threads, quiet})) {
+    } else if (!run_study_in_folder(definition, scale, out, StudyRunSettings{presets, threads, quiet, terminal})) {
       py::gil_scoped_acquire acquire;
       d["finished"] = false;
       return d;
     }
-    const fs::path page = write_study_outputs(definition, scale, out, quiet, presets);
+    const fs::path page = write_study_outputs(definition, scale, out, quiet, presets, plot::FigureFormat::png, terminal);
     py::gil_scoped_acquire acquire;
     d["report"] = page.string();
   }

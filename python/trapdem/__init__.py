@@ -160,29 +160,53 @@ class RunFolder:
                      "particles": len(g["id"])}
                     for name, g in f["snapshots"].items()]
 
-    def snapshot(self, index: int) -> dict:
+    def snapshot(self, index: int, *, by_id: bool = True) -> dict:
         """Snapshot `index` (negative from the end) as numpy arrays: id, position (N, 3) m, radius m,
-        velocity m/s, angular_velocity rad/s, image, sorted by id (rows change order between snapshots)."""
+        velocity m/s, angular_velocity rad/s, image, and its attributes (stage, time, ...).
+
+        `by_id` (default): rows sorted by id, so that row k is the same particle in every snapshot
+        (rows change order between snapshots); this reads and reorders, a copy. `by_id=False`: the
+        file's row order without copying: each dataset trapdem wrote (contiguous, uncompressed) is a
+        read-only numpy.memmap of snapshots.h5, read from disk only where it is touched (a million
+        particles' positions cost nothing until used); a dataset stored otherwise (chunked or
+        compressed by another writer) is read. Each snapshot is a file of its own
+        (snapshots/NNNNNN.h5, linked from snapshots.h5) that trapdem writes once and never changes; a
+        resume that removes it leaves the maps valid (the file lives on under them)."""
         import h5py
         import numpy
         with h5py.File(self.path / "snapshots.h5", "r") as f:
             names = list(f["snapshots"])
             g = f["snapshots"][names[index]]
-            ids = g["id"][:]
-            order = numpy.argsort(ids, kind="stable")
-            out = {key: g[key][:][order] for key in g.keys()}
+            if by_id:
+                ids = g["id"][:]
+                order = numpy.argsort(ids, kind="stable")
+                out = {key: g[key][:][order] for key in g.keys()}
+            else:
+                out = {key: _mapped(g[key]) for key in g.keys()}
             out.update({key: (v.item() if hasattr(v, "item") else v) for key, v in g.attrs.items()})
             return out
 
 
+def _mapped(dataset):
+    """An HDF5 dataset as a read-only numpy.memmap of the file that holds it (through snapshots.h5's
+    external link) when it is one contiguous block (no filter, no chunks: HDF5 then stores it as
+    plain bytes at get_offset()), else read."""
+    import numpy
+    offset = dataset.id.get_offset()
+    if offset is None or dataset.chunks is not None or dataset.compression is not None or dataset.size == 0:
+        return dataset[()]
+    return numpy.memmap(dataset.file.filename, dtype=dataset.dtype, mode="r", offset=offset, shape=dataset.shape)
+
+
 def run(config=None, *, preset: str | None = None, out=None, overrides: Iterable[str] = (), threads: int = 0,
-        quiet: bool = True, stop_after: float = 0.0) -> RunFolder:
+        quiet: bool = False, stop_after: float = 0.0) -> RunFolder:
     """Runs a trapdoor experiment into `out` (a new folder) and returns it.
 
     `config` is a dict (tables as nested dicts), TOML text or a file; with `preset` it is a dict of
     changes to that preset (applied as ``--set`` assignments). `overrides` are "key.path=value" strings as ``--set``. `threads`: 0 is
-    the configuration's numerics.threads, else all cores. `stop_after` (s of wall clock) stops it with
-    a checkpoint. Ctrl-C (KeyboardInterrupt) stops it with a checkpoint too, as the program does;
+    the configuration's numerics.threads, else all cores. The run's progress lines go to sys.stdout (a
+    notebook shows them in the cell), its warnings to sys.stderr; `quiet` keeps the progress in
+    run.log only. `stop_after` (s of wall clock) stops it with a checkpoint. Ctrl-C (KeyboardInterrupt) stops it with a checkpoint too, as the program does;
     :func:`resume` carries it on."""
     text, name, file, changes = _configuration(config, preset)
     finished = _trapdem.run(text, name, file, changes + list(overrides), str(out or ""), "", [], threads, quiet,
@@ -194,7 +218,7 @@ def run(config=None, *, preset: str | None = None, out=None, overrides: Iterable
 
 
 def resume(folder, *, allow_change: Iterable[str] = (), overrides: Iterable[str] = (), threads: int = 0,
-           quiet: bool = True, stop_after: float = 0.0) -> RunFolder:
+           quiet: bool = False, stop_after: float = 0.0) -> RunFolder:
     """Carries on a run from its checkpoint (as ``trapdem run --resume``)."""
     path = str(pathlib.Path(folder))
     finished = _trapdem.run("", "", "", list(overrides), "", path, list(allow_change), threads, quiet, stop_after)
@@ -236,10 +260,11 @@ def element(config=None, *, preset: str | None = None, out=None, overrides: Iter
     return _trapdem.element(file, list(overrides), str(out or ""), threads)
 
 
-def study(file, *, scale: str = "", out=None, threads: int = 0, quiet: bool = True, report_only: bool = False) -> dict:
+def study(file, *, scale: str = "", out=None, threads: int = 0, quiet: bool = False, report_only: bool = False) -> dict:
     """A study (docs/study.md) run, resumed (its finished runs skipped) and reported into `out`
     (default trapdem-out/<study>-<scale>), as ``trapdem study``: returns the folder, the report's
-    page and its summary (summary.json as a dict). Ctrl-C stops it with its running case's
+    page and its summary (summary.json as a dict). Its lines and its runs' progress go to sys.stdout
+    unless `quiet` (then to study.log and each run.log only). Ctrl-C stops it with its running case's
     checkpoint and raises KeyboardInterrupt; calling it again carries on."""
     r = _trapdem.study(str(file), scale, str(out or ""), str(_preset_directory()), threads, quiet, report_only)
     if not r["finished"]:

@@ -264,7 +264,7 @@ bool run_logged(const FolderRunOptions& o, std::optional<RunLog>& log) {
         lock_run_folder(lock, folder);
         restart = !folder.has_checkpoint();
         if (restart) lost_checkpoints = checkpoints_logged(folder.run_log());
-        log.emplace(folder.run_log(), o.quiet);
+        log.emplace(folder.run_log(), o.quiet, o.terminal);
         log->say(fmt::format("trapdem run --resume {}", out.string()));
         if (const int removed = remove_interrupted_writes(folder); removed > 0)
           log->say(fmt::format("removed {} temporary file{} of a write the stop interrupted", removed,
@@ -317,7 +317,7 @@ bool run_logged(const FolderRunOptions& o, std::optional<RunLog>& log) {
       fs::create_directories(out, ec);
       if (ec) throw FileError(fmt::format("cannot create the output folder {}: {}", out.string(), ec.message()));
       lock_run_folder(lock, folder);
-      log.emplace(folder.run_log(), o.quiet);  // before anything else is written: the log from its first line
+      log.emplace(folder.run_log(), o.quiet, o.terminal);  // before anything else is written: the log from its first line
     }
     if (resume) {
       ckpt = read_checkpoint(folder.checkpoint_h5());

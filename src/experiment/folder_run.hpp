@@ -7,6 +7,8 @@
 #include <string>
 #include <vector>
 
+#include "core/line_sink.hpp"
+
 namespace trapdem {
 
 class RunRanks;  // run_ranks.hpp
@@ -23,6 +25,7 @@ struct FolderRunOptions {
   std::filesystem::path resume_dir;     // non-empty: carry on the run in this folder from its checkpoint
   int threads = 0;                      // 0: the configuration's numerics.threads, else all cores
   bool quiet = false;                   // no progress lines on the terminal (run.log still has them)
+  LineSink terminal;                    // where the terminal's lines go (default: stdout and stderr)
   double stop_after_seconds = 0.0;      // > 0: stop (with a checkpoint) after this much wall clock
   std::int64_t stop_at_step = 0;        // > 0: stop (with a checkpoint) at this engine step (tests)
   // The ranks the run spans (src/parallel's MpiRunRanks under mpirun; every rank calls

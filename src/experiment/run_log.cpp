@@ -9,7 +9,8 @@
 
 namespace trapdem {
 
-RunLog::RunLog(std::filesystem::path path, bool quiet) : path_(std::move(path)), quiet_(quiet) {
+RunLog::RunLog(std::filesystem::path path, bool quiet, LineSink terminal)
+    : path_(std::move(path)), quiet_(quiet), terminal_(std::move(terminal)) {
   file_ = std::fopen(path_.c_str(), "a");
   if (!file_) throw FileError(fmt::format("cannot open {} for writing: {}", path_.string(), std::strerror(errno)));
 }
@@ -19,15 +20,12 @@ RunLog::~RunLog() {
 }
 
 void RunLog::say(const std::string& line) {
-  if (!quiet_) {
-    fmt::print("{}\n", line);
-    std::fflush(stdout);
-  }
+  if (!quiet_) terminal_.say(line);
   note(line);
 }
 
 void RunLog::warn(const std::string& line) {
-  fmt::print(stderr, "{}\n", line);
+  terminal_.warn(line);
   note(line);
 }
 

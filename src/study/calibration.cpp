@@ -200,7 +200,7 @@ Calibration calibrate(const CalibrateOptions& o) {
     if (!missing.empty())
       throw InputError(fmt::format("--collect: the grid in {} is not complete ({} not finished: see --status); "
                                    "submit or run it again to resume them, then rank", result.out.string(), missing));
-  } else if (!run_study_in_folder(study, scale, result.out, StudyRunSettings{{}, o.threads, o.quiet})) {
+  } else if (!run_study_in_folder(study, scale, result.out, StudyRunSettings{{}, o.threads, o.quiet, {}})) {
     // A study's folder rules: resumable, a changed case refused, another study's folder refused.
     // Its cases name no preset (the scale's base is the file), so no preset folder is needed.
     return result;

@@ -79,11 +79,8 @@ std::string run_title(const StudyCase& c, const CaseRun& run) {
 
 }  // namespace
 
-void log_study_line(const fs::path& out, const std::string& line, bool quiet) {
-  if (!quiet) {
-    fmt::print("{}\n", line);
-    std::fflush(stdout);
-  }
+void log_study_line(const fs::path& out, const std::string& line, bool quiet, const LineSink& terminal) {
+  if (!quiet) terminal.say(line);
   std::ofstream log(out / "study.log", std::ios::app);
   const std::time_t now = std::time(nullptr);
   char stamp[32];
@@ -195,27 +192,28 @@ bool run_study_cases(const StudyDefinition& study, const StudyScale& scale, cons
       FolderRunOptions run;
       run.threads = settings.threads;
       run.quiet = quiet;
+      run.terminal = settings.terminal;
       if (run_finished(folder)) {
-        log_study_line(out, fmt::format("{}: finished before, skipped", counter), quiet);
+        log_study_line(out, fmt::format("{}: finished before, skipped", counter), quiet, settings.terminal);
         continue;
       }
       if (has_checkpoint) {
-        log_study_line(out, fmt::format("{}: resuming from its checkpoint", counter), quiet);
+        log_study_line(out, fmt::format("{}: resuming from its checkpoint", counter), quiet, settings.terminal);
         run.resume_dir = dir;
       } else {
         // Killed before its first checkpoint: nothing to keep.
         if (fs::exists(dir)) fs::remove_all(dir);
-        log_study_line(out, fmt::format("{}: running ({})", counter, c.label), quiet);
+        log_study_line(out, fmt::format("{}: running ({})", counter, c.label), quiet, settings.terminal);
         run.config_file = base_file(r.recipe, settings.preset_directory);
         run.overrides = r.recipe.overrides;
         run.out_dir = dir;
       }
       if (!run_in_folder(run)) {
         log_study_line(out, fmt::format("{}: interrupted (checkpoint written); run the same command again to carry on",
-                                        counter), quiet);
+                                        counter), quiet, settings.terminal);
         return false;
       }
-      log_study_line(out, fmt::format("{}: finished", counter), quiet);
+      log_study_line(out, fmt::format("{}: finished", counter), quiet, settings.terminal);
     }
     if (study.report.element_test) run_case_element_test_once(study, c, scale, out, settings);
   }
@@ -229,11 +227,11 @@ void run_case_element_test_once(const StudyDefinition& study, const StudyCase& c
   const std::string title = fmt::format("{} element test", c.name);
   const fs::path dir = element_directory(out, c);
   if (element_test_finished(test, dir)) {
-    log_study_line(out, fmt::format("{}: finished before, skipped", title), settings.quiet);
+    log_study_line(out, fmt::format("{}: finished before, skipped", title), settings.quiet, settings.terminal);
   } else {
-    log_study_line(out, fmt::format("{}: running ({} particles)", title, test.setup.settings.particles), settings.quiet);
+    log_study_line(out, fmt::format("{}: running ({} particles)", title, test.setup.settings.particles), settings.quiet, settings.terminal);
     run_case_element_test(test, dir, settings.threads);
-    log_study_line(out, fmt::format("{}: finished", title), settings.quiet);
+    log_study_line(out, fmt::format("{}: finished", title), settings.quiet, settings.terminal);
   }
 }
 
@@ -242,7 +240,7 @@ namespace {
 // The numbers of a run that do not come from its analysis: the ground reaction curve and the
 // sinkhole estimate (from analysis/metrics.json, see sinkhole_run.hpp).
 void read_run_numbers(const StudyCase& c, const CaseRun& run, const StudyReportSettings& report, bool quiet,
-                      CaseSummary& summary) {
+                      const LineSink& terminal, CaseSummary& summary) {
   const RunFolder folder(run.dir);
   const fs::path csv = folder.trapdoor_csv();
   if (fs::exists(csv))
@@ -250,7 +248,7 @@ void read_run_numbers(const StudyCase& c, const CaseRun& run, const StudyReportS
   try {
     read_sinkhole_comparison(compare_with_dem(read_dem_run(run.dir), report.angle_of_draw_deg), summary);
   } catch (const InputError& e) {
-    if (!quiet) fmt::print("{}: no sinkhole estimate: {}\n", run_title(c, run), e.what());
+    if (!quiet) terminal.say(fmt::format("{}: no sinkhole estimate: {}", run_title(c, run), e.what()));
   }
 }
 
@@ -259,7 +257,8 @@ void read_run_numbers(const StudyCase& c, const CaseRun& run, const StudyReportS
 // particles in view, say) gets a note and does not hide the others. A finished run whose
 // snapshots are gone is summarised from the analysis it kept (stored_analysis.hpp), without figures.
 StudyRunResult summarise_run(const StudyDefinition& study, const StudyCase& c, const CaseRun& run,
-                             const fs::path& out, bool quiet, plot::FigureFormat format, std::vector<std::unique_ptr<AnalysisResult>>& finals,
+                             const fs::path& out, bool quiet, const LineSink& terminal, plot::FigureFormat format,
+                             std::vector<std::unique_ptr<AnalysisResult>>& finals,
                              std::vector<std::unique_ptr<AnalysisResult>>& contours) {
   const RunFolder folder(run.dir);
   StudyRunResult r;
@@ -280,7 +279,7 @@ StudyRunResult summarise_run(const StudyDefinition& study, const StudyCase& c, c
     r.stored_strain_figure = stored.strain_figure;
     r.stored_displacement_figure = stored.displacement_figure;
     read_mechanism_metrics(*stored.metrics, r.summary);
-    read_run_numbers(c, run, study.report, quiet, r.summary);
+    read_run_numbers(c, run, study.report, quiet, terminal, r.summary);
     r.analysed = true;
     return r;
   }
@@ -308,7 +307,7 @@ StudyRunResult summarise_run(const StudyDefinition& study, const StudyCase& c, c
   } catch (const InputError& e) {
     r.missing_note = fmt::format("no contours at {}: {}", format_mm(study.report.contours_at), e.what());
   }
-  read_run_numbers(c, run, study.report, quiet, r.summary);
+  read_run_numbers(c, run, study.report, quiet, terminal, r.summary);
   r.analysed = true;
   return r;
 }
@@ -316,7 +315,7 @@ StudyRunResult summarise_run(const StudyDefinition& study, const StudyCase& c, c
 }  // namespace
 
 fs::path write_study_outputs(const StudyDefinition& study, const StudyScale& scale, const fs::path& out, bool quiet,
-                             const fs::path& preset_directory, plot::FigureFormat format) {
+                             const fs::path& preset_directory, plot::FigureFormat format, const LineSink& terminal) {
   StudyReportInput input;
   input.study_name = study.name;
   input.description = study.description;
@@ -331,7 +330,7 @@ fs::path write_study_outputs(const StudyDefinition& study, const StudyScale& sca
     r.run_dir = case_directory(out, c);
     std::vector<CaseSummary> analysed;
     for (const CaseRun& run : case_runs(study, c, scale, out, preset_directory)) {
-      r.runs.push_back(summarise_run(study, c, run, out, quiet, format, finals, contours));
+      r.runs.push_back(summarise_run(study, c, run, out, quiet, terminal, format, finals, contours));
       const StudyRunResult& last = r.runs.back();
       if (!last.analysed) continue;
       analysed.push_back(last.summary);
@@ -380,7 +379,7 @@ bool run_study_in_folder(const StudyDefinition& study, const StudyScale& scale, 
   if (ec) throw FileError(fmt::format("cannot create the study folder {}: {}", out.string(), ec.message()));
   claim_study_folder(study, scale, out);
   log_study_line(out, fmt::format("study '{}' at scale '{}' ({} cases) in {}", study.name, scale.name,
-                                  study.cases.size(), out.string()), settings.quiet);
+                                  study.cases.size(), out.string()), settings.quiet, settings.terminal);
   return run_study_cases(study, scale, out, settings);
 }
 

@@ -8,6 +8,7 @@
 #include <string>
 #include <vector>
 
+#include "core/line_sink.hpp"
 #include "plot/figure_format.hpp"
 #include "study/study_definition.hpp"
 
@@ -17,6 +18,7 @@ struct StudyRunSettings {
   std::filesystem::path preset_directory;  // where the recipes' preset names are found
   int threads = 0;                         // OpenMP threads per run; 0: each configuration's numerics.threads
   bool quiet = false;                      // the runs' progress lines only in their run.log
+  LineSink terminal;                       // where the study's and its runs' lines go (default: stdout, stderr)
 };
 
 // The case's configuration at the scale as `trapdem run` resolves it (resolved.toml's text); throws
@@ -76,13 +78,16 @@ bool run_study_in_folder(const StudyDefinition& study, const StudyScale& scale, 
                          const StudyRunSettings& settings);
 
 // Analyses every finished run and writes out/report/, the runs' analysis figures and the report's
-// in `format`. Returns the page's path.
+// in `format`. Returns the page's path. Its notes (a run without a sinkhole estimate) go to
+// `terminal` unless quiet.
 std::filesystem::path write_study_outputs(const StudyDefinition& study, const StudyScale& scale,
                                           const std::filesystem::path& out, bool quiet,
                                           const std::filesystem::path& preset_directory = {},
-                                          plot::FigureFormat format = plot::FigureFormat::png);
+                                          plot::FigureFormat format = plot::FigureFormat::png,
+                                          const LineSink& terminal = {});
 
-// Appends a line to out/study.log (time-stamped) and prints it unless quiet.
-void log_study_line(const std::filesystem::path& out, const std::string& line, bool quiet);
+// Appends a line to out/study.log (time-stamped) and says it on `terminal` unless quiet.
+void log_study_line(const std::filesystem::path& out, const std::string& line, bool quiet,
+                    const LineSink& terminal = {});
 
 }  // namespace trapdem

@@ -95,6 +95,22 @@ def test_a_run_folder_read(short_run):
     assert last["position"].shape == (n, 3) and last["radius"].shape == (n,)
     assert np.all(np.diff(last["id"]) > 0)  # sorted by id
     assert last["stage"] == "lowering"
+    # In the file's order without a copy: read-only maps of snapshots.h5, the same rows.
+    mapped = short_run.snapshot(-1, by_id=False)
+    for key in ("id", "position", "radius", "velocity", "angular_velocity", "image"):
+        assert isinstance(mapped[key], np.memmap) and not mapped[key].flags.writeable, key
+        order = np.argsort(mapped[key if key == "id" else "id"], kind="stable")
+        assert np.array_equal(mapped[key][order], last[key]), key
+    assert mapped["stage"] == "lowering"
+
+
+def test_the_progress_goes_to_sys_stdout(scratch, capsys):
+    # A notebook shows sys.stdout, not the process's file descriptor 1: capsys sees only the former.
+    trapdem.run(SHORT, preset="tiny", out=scratch / "loud", threads=1)
+    said = capsys.readouterr().out
+    assert "stage lowering finished" in said and "finished after" in said
+    trapdem.run(SHORT, preset="tiny", out=scratch / "quiet", threads=1, quiet=True)
+    assert capsys.readouterr().out == ""
 
 
 def test_the_analysis_is_the_programs(scratch, short_run):
