@@ -66,6 +66,26 @@ py::array_t<double> points_array(const std::vector<Point2>& points) {
   return array_of(flat, {py::ssize_t(points.size()), 2});
 }
 
+// One PIV strain field (piv_strain.hpp) as arrays: the nodes (subset centres in image 1) and
+// their displacement (N, 2: x, z in the result's unit, z up), the kept triangles (M, 3 node
+// indices), gamma_max and the volumetric strain per triangle (compression positive). None for an
+// image without a field (image 1, or too few valid subsets).
+py::object strain_field(const PivStrainField& f) {
+  if (f.mesh.size() == 0) return py::none();
+  std::vector<std::int64_t> triangles, subsets;
+  for (const auto& t : f.mesh.triangles)
+    for (std::size_t c : t) triangles.push_back(std::int64_t(c));
+  for (std::size_t k : f.subset) subsets.push_back(std::int64_t(k));
+  py::dict d;
+  d["subset"] = py::array_t<std::int64_t>({py::ssize_t(subsets.size())}, subsets.data());
+  d["position"] = points_array(f.position);
+  d["displacement"] = points_array(f.displacement);
+  d["triangles"] = py::array_t<std::int64_t>({py::ssize_t(f.mesh.size()), py::ssize_t(3)}, triangles.data());
+  d["gamma_max"] = array_of(f.max_shear, {py::ssize_t(f.max_shear.size())});
+  d["volumetric"] = array_of(f.volumetric, {py::ssize_t(f.volumetric.size())});
+  return d;
+}
+
 bool run(const std::string& config_text, const std::string& config_name, const std::string& config_file,
          const std::vector<std::string>& overrides, const std::string& out, const std::string& resume,
          const std::vector<std::string>& allowed_changes, int threads, bool quiet, double stop_after_seconds) {
@@ -191,6 +211,13 @@ py::dict piv(const std::vector<std::string>& images, const std::string& out, int
   d["v_px"] = array_of(v, {py::ssize_t(n), py::ssize_t(m)});
   d["zncc"] = array_of(zncc, {py::ssize_t(n), py::ssize_t(m)});
   d["unit"] = r.unit;
+  py::list total, incremental;
+  for (std::size_t k = 0; k < n; ++k) {
+    total.append(k < r.strain.total.size() ? strain_field(r.strain.total[k]) : py::none());
+    incremental.append(k < r.strain.incremental.size() ? strain_field(r.strain.incremental[k]) : py::none());
+  }
+  d["total_strain"] = total;
+  d["incremental_strain"] = incremental;
   std::vector<std::string> files;
   for (const fs::path& f : r.written) files.push_back(f.string());
   d["written"] = files;

@@ -277,7 +277,12 @@ def study(file, *, scale: str = "", out=None, threads: int = 0, quiet: bool = Fa
 def piv(images: Iterable, out, *, subset: int = 32, step: int = 16, threads: int = 0, scale: float | None = None,
         origin=None, figures: bool = False) -> dict:
     """PIV over photographs (in order) into `out` (displacements.csv, piv.h5): subset centres `x_px`,
-    `y_px` and per image and subset `u_px`, `v_px` (displacement from image 1, y down) and `zncc`."""
+    `y_px` and per image and subset `u_px`, `v_px` (displacement from image 1, y down) and `zncc`;
+    and per image the strain (the DEM analysis' constant strain triangles over the valid subset
+    centres, as piv.h5 has it): `total_strain[k]` from image 1 and `incremental_strain[k]` from
+    image k-1, each None for image 1, else a dict of `position` and `displacement` (N, 2: x, z up,
+    in `unit`), `triangles` (M, 3), `gamma_max` and `volumetric` (per triangle, compression
+    positive), `subset` (each node's subset index)."""
     return _trapdem.piv([str(p) for p in images], str(out), subset, step, threads, scale, list(origin or []), figures)
 
 

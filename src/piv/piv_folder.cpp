@@ -61,7 +61,8 @@ PivFolderResult run_piv_into_folder(const PivFolderOptions& o, const PivProgress
   if (ec) throw FileError(fmt::format("cannot create the output folder {}: {}", o.out.string(), ec.message()));
   write_displacements_csv(out.result, o.out / "displacements.csv");
   const PixelToModel to_plot = model ? *model : scale_transform(1.0);
-  const PivStrainSeries strain = compute_piv_strain(out.result, to_plot);
+  out.strain = compute_piv_strain(out.result, to_plot);
+  const PivStrainSeries& strain = out.strain;
   std::vector<std::string> names;
   for (const fs::path& image : o.images) names.push_back(image.string());
   write_piv_h5(o.out / "piv.h5", out.result, names, model, out.unit, strain);

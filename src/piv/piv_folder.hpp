@@ -39,6 +39,7 @@ struct PivFolderResult {
   std::string unit;                        // "mm", "model units" or "px"
   std::size_t subsets = 0;                 // on image 1
   double seconds = 0.0;                    // wall clock of the correlation
+  PivStrainSeries strain;                  // per image: total and incremental strain (piv.h5's), in `unit`
   std::vector<std::filesystem::path> written;
 };
 

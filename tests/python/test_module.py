@@ -134,6 +134,17 @@ def test_piv_on_synthetic_images(scratch):
     assert np.all(np.abs(r["u_px"][1][valid] - 2.5) < 0.05)
     assert np.all(np.abs(r["v_px"][1][valid] - 1.5) < 0.05)
     assert (scratch / "piv" / "piv.h5").is_file()
+    # The strain of a rigid shift is zero (PIV's ~0.02 px noise over 16 px edges: ~1e-3).
+    assert r["total_strain"][0] is None
+    rigid = r["total_strain"][1]
+    assert rigid["triangles"].shape[1] == 3 and len(rigid["gamma_max"]) == len(rigid["triangles"])
+    assert rigid["position"].shape == rigid["displacement"].shape == (len(rigid["subset"]), 2)
+    assert np.median(rigid["gamma_max"]) < 2e-3
+    # A simple shear of 0.02: gamma_max = gamma (White & Bolton 2004), the median within 10 %.
+    sheared = trapdem.synth("shear", scratch / "shear", size=(160, 160), images=2, magnitude=0.02)
+    shear = trapdem.piv(sheared, scratch / "piv-shear", threads=1)["total_strain"][1]
+    assert np.median(shear["gamma_max"]) == pytest.approx(0.02, rel=0.1)
+    assert np.median(np.abs(shear["volumetric"])) < 2e-3
 
 
 def test_ctrl_c_stops_with_a_checkpoint_and_the_resume_finishes_the_same_run(scratch):
