@@ -203,11 +203,12 @@ def run(config=None, *, preset: str | None = None, out=None, overrides: Iterable
     """Runs a trapdoor experiment into `out` (a new folder) and returns it.
 
     `config` is a dict (tables as nested dicts), TOML text or a file; with `preset` it is a dict of
-    changes to that preset (applied as ``--set`` assignments). `overrides` are "key.path=value" strings as ``--set``. `threads`: 0 is
-    the configuration's numerics.threads, else all cores. The run's progress lines go to sys.stdout (a
-    notebook shows them in the cell), its warnings to sys.stderr; `quiet` keeps the progress in
-    run.log only. `stop_after` (s of wall clock) stops it with a checkpoint. Ctrl-C (KeyboardInterrupt) stops it with a checkpoint too, as the program does;
-    :func:`resume` carries it on."""
+    changes to that preset (applied as ``--set`` assignments). `overrides` are "key.path=value"
+    strings as ``--set``. `threads`: 0 is the configuration's numerics.threads, else all cores. The
+    run's progress lines go to sys.stdout (a notebook shows them in the cell), its warnings to
+    sys.stderr; `quiet` keeps the progress in run.log only. `stop_after` (s of wall clock) stops it
+    with a checkpoint. Ctrl-C (KeyboardInterrupt) stops it with a checkpoint too, as the program
+    does; :func:`resume` carries it on."""
     text, name, file, changes = _configuration(config, preset)
     finished = _trapdem.run(text, name, file, changes + list(overrides), str(out or ""), "", [], threads, quiet,
                             stop_after)

@@ -62,17 +62,16 @@ PivFolderResult run_piv_into_folder(const PivFolderOptions& o, const PivProgress
   write_displacements_csv(out.result, o.out / "displacements.csv");
   const PixelToModel to_plot = model ? *model : scale_transform(1.0);
   out.strain = compute_piv_strain(out.result, to_plot);
-  const PivStrainSeries& strain = out.strain;
   std::vector<std::string> names;
   for (const fs::path& image : o.images) names.push_back(image.string());
-  write_piv_h5(o.out / "piv.h5", out.result, names, model, out.unit, strain);
+  write_piv_h5(o.out / "piv.h5", out.result, names, model, out.unit, out.strain);
   out.written = {o.out / "displacements.csv", o.out / "piv.h5"};
   if (o.figures) {
     PivFigureInput in;
     in.format = o.format;
     in.settlement_levels = o.settlement_levels;
     in.result = &out.result;
-    in.strain = &strain;
+    in.strain = &out.strain;
     in.first_image = read_for_figure(o.images.front());
     in.last_image = read_for_figure(o.images.back());
     in.to_plot = to_plot;
