@@ -178,7 +178,7 @@ int HostLoad::total_threads() const {
                          [](int sum, const RegisteredRun& r) { return sum + r.threads; });
 }
 
-std::string HostLoad::warning(const std::string& wait_policy) const {
+std::string HostLoad::warning(const std::string& wait_policy, bool restart_failed) const {
   if (!oversubscribed()) return {};
   std::string text = "this host oversubscribed: ";
   if (process_oversubscribed())
@@ -197,9 +197,14 @@ std::string HostLoad::warning(const std::string& wait_policy) const {
   for (char& c : policy) c = char(std::tolower(static_cast<unsigned char>(c)));
   if (policy == "passive")
     text += "this run's threads wait passively (they sleep instead of spinning)";
-  else if (policy.empty())
+  else if (policy.empty() && restart_failed)
     text += "this run's threads spin while they wait (the program could not restart itself with "
             "OMP_WAIT_POLICY=passive): set that variable, or use fewer threads (--threads)";
+  else if (policy.empty())
+    // libgomp reads the policy once, when it is loaded: a run that found the host free at its
+    // start and was joined later cannot change how its threads wait (wait_policy.hpp).
+    text += "this run's threads spin while they wait (the host was not crowded when it started, and how "
+            "threads wait is fixed at the start): set OMP_WAIT_POLICY=passive, or use fewer threads (--threads)";
   else
     text += fmt::format("this run's threads spin while they wait (OMP_WAIT_POLICY={} was set by hand): set it to "
                         "passive, or use fewer threads (--threads)",

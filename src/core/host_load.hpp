@@ -75,8 +75,10 @@ struct HostLoad {
   bool host_oversubscribed() const { return total_threads() > host_cores; }
   bool oversubscribed() const { return process_oversubscribed() || host_oversubscribed(); }
   // The warning's text (empty when not oversubscribed): what was found, what it costs, and how
-  // this run's threads wait under `wait_policy` (OMP_WAIT_POLICY's value, "" when not set).
-  std::string warning(const std::string& wait_policy) const;
+  // this run's threads wait under `wait_policy` (OMP_WAIT_POLICY's value, "" when not set);
+  // `restart_failed`: the program tried to re-execute itself with passive waits and could not
+  // (else, with the policy unset, the host was not crowded when it started: the others came later).
+  std::string warning(const std::string& wait_policy, bool restart_failed = false) const;
 };
 
 // This process's view: its usable cores, the host's, and the others registered (all of them: the

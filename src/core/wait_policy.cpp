@@ -40,7 +40,11 @@ int threads_in_arguments(int argc, char** argv) {
   return 0;
 }
 
+bool restart_failed = false;
+
 }  // namespace
+
+bool passive_restart_failed() { return restart_failed; }
 
 std::string wait_policy() {
   const char* policy = std::getenv("OMP_WAIT_POLICY");
@@ -70,6 +74,7 @@ void wait_passively_when_crowded(int argc, char** argv) {
   ::setenv("OMP_WAIT_POLICY", "passive", 1);
   ::setenv("OMPI_MCA_mpi_yield_when_idle", "1", 0);
   ::execv("/proc/self/exe", argv);  // returns only on failure: the run goes on spinning, and says so
+  restart_failed = true;
 }
 
 }  // namespace trapdem

@@ -19,6 +19,9 @@ namespace trapdem {
 // (not crowded, the policy set by hand, or the exec failed: the run then goes on as it was).
 void wait_passively_when_crowded(int argc, char** argv);
 
+// Whether wait_passively_when_crowded found the host crowded and its re-execution failed.
+bool passive_restart_failed();
+
 // OMP_WAIT_POLICY's value, "" when it is not set.
 std::string wait_policy();
 

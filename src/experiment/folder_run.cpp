@@ -228,7 +228,7 @@ void warn_if_host_oversubscribed(RunRanks* ranks, std::optional<RunLog>& log) {
   std::erase_if(load.others, [&](const RegisteredRun& other) {
     return std::find(sibling_pids.begin(), sibling_pids.end(), double(other.pid)) != sibling_pids.end();
   });
-  if (const std::string warning = load.warning(wait_policy()); !warning.empty() && log) log->warn(warning);
+  if (const std::string warning = load.warning(wait_policy(), passive_restart_failed()); !warning.empty() && log) log->warn(warning);
 }
 
 // Takes the run folder's lock before anything in it is written: a second process on the same
