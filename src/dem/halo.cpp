@@ -24,14 +24,20 @@
 namespace trapdem {
 
 Simulation::NextLists Simulation::agree_on_next_lists() {
-  const double local = escaped_particle_ >= 0 ? 2.0 : (lists_outdated() ? 1.0 : 0.0);
-  double next = local;
+  // One reduction: whether a particle escaped or the lists are invalid on some rank, and the
+  // displacements of all the ranks' particles (the box's lower corner negated: a max too).
+  const DisplacementsSinceBuild& d = displacements_;
+  double values[8] = {escaped_particle_ >= 0 ? 2.0 : (lists_valid_ ? 0.0 : 1.0),
+                      d.max_length2, d.highest.x, d.highest.y, d.highest.z, -d.lowest.x, -d.lowest.y, -d.lowest.z};
   if (decomposition_) {
     const double asked = omp_get_wtime();
-    next = decomposition_->max(local);
+    decomposition_->max(values, 8);
     stats_.exchange_seconds += omp_get_wtime() - asked;
   }
-  return next == 2.0 ? NextLists::stop : next == 1.0 ? NextLists::rebuild : NextLists::keep;
+  if (values[0] == 2.0) return NextLists::stop;
+  if (values[0] == 1.0) return NextLists::rebuild;  // lists_valid_ is false on some rank: rebuilt on all
+  const DisplacementsSinceBuild all{values[1], {-values[5], -values[6], -values[7]}, {values[2], values[3], values[4]}};
+  return lists_outdated(all) ? NextLists::rebuild : NextLists::keep;
 }
 
 void Simulation::rebuild_lists_agreed() {

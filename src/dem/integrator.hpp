@@ -13,9 +13,22 @@
 
 namespace trapdem {
 
+// The particles' displacements since the last list build, as the rebuild criterion needs them
+// (Simulation::lists_outdated): the largest length and the box bounding the displacement vectors.
+struct DisplacementsSinceBuild {
+  double max_length2 = 0.0;  // m^2, the largest squared displacement
+  Vec3 lowest{}, highest{};  // m, per axis the smallest and largest displacement component
+  // m, a bound on |d_i - d_j| over every two particles: the smaller of twice the largest length and
+  // the diagonal of the box around the displacement vectors. The box wins when the particles that
+  // move most move alike (a rain of beads over a bed at rest, a block over a lowered trapdoor):
+  // then two of them do not approach each other, and one of them and one at rest approach by its
+  // own displacement, not by twice the largest.
+  double pair_bound() const;
+};
+
 struct DriftReport {
-  double max_displacement2 = 0.0;  // m^2, largest squared displacement since the list build
-  std::int64_t escaped = -1;       // the first particle outside the domain's bounded axes, or -1
+  DisplacementsSinceBuild displacements;  // of the owned particles; zero when not tracked
+  std::int64_t escaped = -1;              // the first particle outside the domain's bounded axes, or -1
 };
 
 // v += dt/2 (F/m + g), x += dt v, w += dt/2 T/I (w unchanged when `rotate` is false), for the

@@ -1,6 +1,7 @@
 #pragma once
 // The Verlet list of particle pairs: every pair within the interaction range plus a skin, built
-// from the cell sort; rebuilt when something has moved half the skin.
+// from the cell sort; rebuilt when two particles could have approached by the skin
+// (Simulation::lists_outdated).
 #include <cstdint>
 #include <vector>
 

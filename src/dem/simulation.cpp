@@ -239,18 +239,23 @@ void Simulation::integrate_positions() {
   if (frame_) frame_first_half_kick(p_, owned_count(), FrameKick(*frame_, time_, 0.5 * dt_), 0.5 * dt_);
   const DriftReport drift = first_half_kick_and_drift(p_, owned_count(), track ? position_at_build_.data() : nullptr, gravity(), dt_,
                                                       settings_.domain, !settings_.freeze_rotation);
-  max_displacement2_ = drift.max_displacement2;
+  displacements_ = drift.displacements;
   escaped_particle_ = drift.escaped;
   move_walls(walls_, time_, dt_);
   time_ += dt_;
 }
 
-bool Simulation::lists_outdated() const {
-  const double limit = 0.5 * skin_;
-  bool rebuild = !lists_valid_ || max_displacement2_ > limit * limit;
-  for (std::size_t k = 0; k < walls_.size() && !rebuild; ++k)
-    rebuild = norm2(walls_[k].displacement - wall_displacement_at_build_[k]) > limit * limit;
-  return rebuild;
+// A pair not listed was at least the skin apart at the build (build_pairs), a particle not a wall's
+// candidate at least the skin from it (build_wall_candidates). A pair's gap shrinks by at most
+// |d_i - d_j| (bounded by DisplacementsSinceBuild::pair_bound), a particle's gap to a wall by at
+// most |d_i| + the wall's displacement (the distance to a rigidly moved wall is 1-Lipschitz in
+// both). Rebuilt when either bound could reach the skin: the lists then still hold every contact.
+bool Simulation::lists_outdated(const DisplacementsSinceBuild& all) const {
+  if (!lists_valid_ || all.pair_bound() > skin_) return true;
+  double wall_moved2 = 0.0;
+  for (std::size_t k = 0; k < walls_.size(); ++k)
+    wall_moved2 = std::max(wall_moved2, norm2(walls_[k].displacement - wall_displacement_at_build_[k]));
+  return std::sqrt(all.max_length2) + std::sqrt(wall_moved2) > skin_;
 }
 
 void Simulation::rebuild_lists() {

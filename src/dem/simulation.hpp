@@ -10,6 +10,7 @@
 #include "dem/contact_law.hpp"
 #include "dem/domain.hpp"
 #include "dem/history_archive.hpp"
+#include "dem/integrator.hpp"
 #include "dem/pair_histories.hpp"
 #include "dem/pair_list.hpp"
 #include "dem/particles.hpp"
@@ -148,7 +149,9 @@ class Simulation {
 
  private:
   void integrate_positions();
-  bool lists_outdated() const;
+  // Whether a pair or particle-wall contact could form unlisted before the next build, given the
+  // displacements of every particle (on ranks, of all the ranks' particles).
+  bool lists_outdated(const DisplacementsSinceBuild& all) const;
   // The step's parts that cross a sub-domain boundary (halo.cpp): each does nothing more than the
   // one-process work without a decomposition.
   enum class NextLists { keep, rebuild, stop };
@@ -215,7 +218,7 @@ class Simulation {
   SimulationStats stats_;
 
   // Set by the kernels, read by check_stability().
-  double max_displacement2_ = 0.0;
+  DisplacementsSinceBuild displacements_;  // of the owned particles, this step
   double max_overlap_seen_ = 0.0;
   std::int64_t bad_particle_ = -1;     // non-finite state
   std::int64_t escaped_particle_ = -1;
