@@ -148,12 +148,34 @@ DepositMetrics measure_deposit(const Snapshot& s, const DepositSettings& setting
     if (rattlers) *rattlers = in_layer > 0 ? double(loose) / in_layer : 0.0;
   };
 
+  // The weight above the plane z = a per plan area: each sphere's part above it, at its centre's
+  // acceleration (the acceleration varies over a diameter by d/R of itself, < 1e-3 in a centrifuge).
+  const bool stress = settings.solid_density > 0.0 && static_cast<bool>(settings.downward_acceleration);
+  std::vector<double> weight_factor;  // rho a_down(x_i), N/m^3
+  if (stress) {
+    weight_factor.resize(n);
+    for (std::size_t i = 0; i < n; ++i)
+      weight_factor[i] = settings.solid_density * settings.downward_acceleration(s.position[i]);
+  }
+  auto geostatic_stress_at = [&](double a) {
+    double weight = 0.0;  // N
+    for (std::size_t i = 0; i < n; ++i) {
+      const double zc = s.position[i].z, r = s.radius[i];
+      if (zc + r <= a) continue;
+      const double whole = 4.0 / 3.0 * std::numbers::pi * r * r * r;
+      weight += weight_factor[i] * (whole - sphere_volume_below(zc, r, a));
+    }
+    return weight / area;
+  };
+
   const double bin = settings.bin_height > 0.0 ? settings.bin_height : 5.0 * d;
   for (double a = 0.0; a < top; a += bin) {
     DepositBin b;
     layer(a, a + bin, b, nullptr);
+    if (stress) b.geostatic_stress = geostatic_stress_at(a);
     m.profile.push_back(b);
   }
+  if (stress) m.base_geostatic_stress = geostatic_stress_at(0.0);
   m.bulk_z_low = settings.base_margin * d;
   m.bulk_z_high = m.surface_height - settings.surface_margin * d;
   if (m.bulk_z_high > m.bulk_z_low) {

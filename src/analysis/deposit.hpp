@@ -2,6 +2,11 @@
 // The deposit a fill leaves: solid fraction and coordination number by height, the surface height,
 // and their bulk values. What a faster fill must reproduce before it may replace the slow pour
 // (docs/validation.md): the same density, its profile with height and the same contact network.
+// And the geostatic vertical stress with height, the weight of the deposit above a level per unit
+// of the box's plan area, under the body acceleration the deposit was in (uniform N g, or a
+// centrifuge's, which grows with depth: Taylor 1995, section 2.4).
+#include <functional>
+#include <limits>
 #include <vector>
 
 #include "io/snapshot.hpp"
@@ -17,6 +22,10 @@ struct DepositSettings {
   // the base to `surface_margin` below the surface, in mean diameters.
   double base_margin = 5.0;
   double surface_margin = 5.0;
+  // The geostatic stress: the solid's density (kg/m^3) and the body acceleration's downward (-z)
+  // component at a position (m/s^2). Without both, no stress is given (NaN).
+  double solid_density = 0.0;
+  std::function<double(const Vec3&)> downward_acceleration;
 };
 
 struct DepositBin {
@@ -24,6 +33,9 @@ struct DepositBin {
   double solid_fraction = 0.0;       // sphere volume inside the slab / slab volume
   double coordination = 0.0;         // contacts per particle whose centre is in the slab
   int particles = 0;                 // centres in the slab
+  // Pa, the geostatic vertical stress at the slab's lower face z_low: sum over the particles of
+  // rho (the part of the sphere's volume above z_low) a_down(centre), over the plan area.
+  double geostatic_stress = std::numeric_limits<double>::quiet_NaN();
 };
 
 struct DepositMetrics {
@@ -41,6 +53,7 @@ struct DepositMetrics {
   double max_overlap = 0.0;
   long contacts = 0;
   std::vector<DepositBin> profile;  // from the base up to the highest top
+  double base_geostatic_stress = std::numeric_limits<double>::quiet_NaN();  // Pa, at z = 0: the whole weight
 };
 
 // Throws InputError for an empty snapshot, a box of no size or particles outside it in x or y.

@@ -469,6 +469,16 @@ ExperimentConfig ExperimentConfig::specimen_from(Config& c) {
   e.pluviation.fill_height = read_fill_height(pour, e.box);
   Config spin = c.get_table("spin_up");
   e.spin_up.g_level = read_g_level(spin, e.spin_up);
+  // The weight the deposit is under (trapdem deposit): the solid's density and the frame. A run's
+  // resolved.toml records the model height its frame used (a packing's top, for a run from one).
+  Config particles = c.get_table("particles");
+  e.material.density = particles.get_double("density", e.material.density, "kg/m^3", Range::open_closed(0.0, kMaxDensity));
+  read_centrifuge(c, e);
+  if (e.centrifuge.enabled && c.has("derived")) {
+    Config derived = c.get_table("derived");
+    e.centrifuge.model_height =
+        derived.get_double("centrifuge_model_height", e.centrifuge.model_height, "m", Range::open_closed(0.0, kMaxLength));
+  }
   return e;
 }
 

@@ -125,8 +125,9 @@ struct ExperimentConfig {
   // adds the derived values (time step, particle count, critical step) to the resolved record.
   static ExperimentConfig from(Config& config);
 
-  // The specimen alone: name, description, box, trapdoor, pluviation.fill_height and
-  // spin_up.g_level, read with the same keys, defaults and rules as from(); other keys are left
+  // The specimen alone: name, description, box, trapdoor, pluviation.fill_height,
+  // spin_up.g_level, particles.density and [centrifuge] (its model height as the run's
+  // derived.centrifuge_model_height when given), read with the same keys, defaults and rules as from(); other keys are left
   // unread and not reported, other members keep their defaults. What the analyses of a run folder
   // need from its resolved.toml (RunFolder), and what a short file describing a run made with
   // another code gives them (--config FILE with [box] and [trapdoor]).

@@ -123,3 +123,26 @@ TEST(Deposit, BadInputIsAClearError) {
   settings.box_width = 0.0;
   EXPECT_THROW(measure_deposit(lattice(2, 2, 2, 0.0), settings), InputError);
 }
+
+// Without a density and an acceleration the deposit gives no stress (NaN, null in deposit.json)
+// rather than a made-up one; with them, the weight above each slab's lower face.
+TEST(Deposit, TheGeostaticStressNeedsADensityAndAnAcceleration) {
+  const int nx = 6, ny = 3, nz = 10;
+  const double squeeze = 1e-6, s = 2.0 * kRadius * (1.0 - squeeze);
+  DepositSettings settings;
+  settings.box_width = nx * s;
+  settings.box_depth = ny * s;
+  settings.bin_height = 5.0 * s;
+  const Snapshot snap = lattice(nx, ny, nz, squeeze);
+  const DepositMetrics none = measure_deposit(snap, settings);
+  EXPECT_TRUE(std::isnan(none.base_geostatic_stress));
+  EXPECT_TRUE(std::isnan(none.profile[0].geostatic_stress));
+  settings.solid_density = 1000.0;
+  settings.downward_acceleration = [](const Vec3&) { return 10.0; };
+  const DepositMetrics m = measure_deposit(snap, settings);
+  // Each layer weighs rho (4/3 pi r^3) a per sphere; tolerance 1e-5: the squeeze (test above).
+  const double layer = nx * ny * 1000.0 * 4.0 / 3.0 * std::numbers::pi * std::pow(kRadius, 3) * 10.0 /
+                       (settings.box_width * settings.box_depth);  // Pa
+  EXPECT_NEAR(m.base_geostatic_stress / (nz * layer), 1.0, 1e-5);
+  EXPECT_NEAR(m.profile[1].geostatic_stress / (5 * layer), 1.0, 1e-5);
+}

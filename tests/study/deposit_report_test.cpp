@@ -4,6 +4,7 @@
 
 #include <filesystem>
 #include <fstream>
+#include <cmath>
 #include <numbers>
 #include <sstream>
 
@@ -82,4 +83,37 @@ TEST(DepositReport, AFolderWithoutSnapshotsIsAClearError) {
   }
   fs::remove(dir / "resolved.toml");
   EXPECT_THROW(measure_run_deposit(dir.path()), InputError);
+}
+
+// The geostatic stress at the base: the lattice's weight over the plan area, rho (pi/6) H a for a
+// uniform acceleration a (the lattice's layers are a midpoint rule: exact for an acceleration linear in
+// height). 1 g while settling, the g level (the default 50) from the spin-up on; in a centrifuge
+// whose axis is R above the base, a(z) = omega^2 (R - z) with omega^2 R = 50 g, so the weight is
+// rho (pi/6) 50 g (H - H^2 / 2R): 2 % less at H = 40 mm, R = 1 m. Tolerance 1e-5 relative: the
+// lattice's squeeze of 1e-6 (tests/analysis/deposit_test.cpp).
+TEST(DepositReport, TheGeostaticStressIsTheWeightOverThePlanAreaUnderTheRunsAcceleration) {
+  const double s = 0.002 * (1.0 - 1e-6), height = 20 * s, rho = 2500.0, g = 9.81;
+  const double phi = std::numbers::pi / 6.0 / std::pow(1.0 - 1e-6, 3);
+  const test::ScratchDir dir = fresh_folder("geostatic");
+  append_snapshot(dir / "snapshots.h5", lattice_snapshot("settling", 0.0));
+  append_snapshot(dir / "snapshots.h5", lattice_snapshot("lowering", 0.0));
+  const auto uniform = measure_run_deposit(dir.path());
+  ASSERT_EQ(uniform.size(), 2u);
+  const double one_g = rho * phi * height * g;  // Pa
+  EXPECT_NEAR(uniform[0].metrics.base_geostatic_stress / one_g, 1.0, 1e-5);
+  EXPECT_NEAR(uniform[1].metrics.base_geostatic_stress / (50.0 * one_g), 1.0, 1e-5);
+  // Halfway up (the profile's slabs are 5 diameters: 10 layers below z = 10 s, the second slab's
+  // lower face), half the weight.
+  ASSERT_GE(uniform[1].metrics.profile.size(), 3u);
+  EXPECT_NEAR(uniform[1].metrics.profile[2].z_low, 10 * s, 1e-6);
+  EXPECT_NEAR(uniform[1].metrics.profile[2].geostatic_stress / (25.0 * one_g), 1.0, 1e-5);
+
+  const double radius = 1.0;  // m, from the axis to the base
+  std::ofstream(dir / "resolved.toml", std::ios::app)
+      << "[centrifuge]\nradius = " << radius << "\nreference = \"base\"\neuler = false\n";
+  const auto frame = measure_run_deposit(dir.path());
+  EXPECT_NEAR(frame[0].metrics.base_geostatic_stress / one_g, 1.0, 1e-5);  // settling: 1 g, before the spin
+  const double expected = rho * phi * 50.0 * g * (height - height * height / (2.0 * radius));
+  EXPECT_NEAR(frame[1].metrics.base_geostatic_stress / expected, 1.0, 1e-5);
+  EXPECT_NE(deposit_table(frame).find("sigma_v0 kPa"), std::string::npos);
 }
