@@ -20,4 +20,12 @@ CellSort sort_into_cells(const std::vector<Vec3>& positions, const Domain& domai
   return s;
 }
 
+CellSort in_cell_order(CellSort sorted) {
+  std::vector<std::uint32_t> cell_of(sorted.order.size());
+  for (std::size_t k = 0; k < sorted.order.size(); ++k) cell_of[k] = sorted.cell_of[sorted.order[k]];
+  sorted.cell_of = std::move(cell_of);
+  std::iota(sorted.order.begin(), sorted.order.end(), 0u);
+  return sorted;
+}
+
 }  // namespace trapdem

@@ -18,4 +18,9 @@ struct CellSort {
 };
 CellSort sort_into_cells(const std::vector<Vec3>& positions, const Domain& domain, double cell_size);
 
+// The sort of the particles once they are re-ordered by `sorted.order` (Particles::permute): the
+// same grid and cells, each particle's cell in its new place, the identity order. What
+// sort_into_cells would return for the permuted positions, without sorting again.
+CellSort in_cell_order(CellSort sorted);
+
 }  // namespace trapdem

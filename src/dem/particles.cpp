@@ -42,7 +42,10 @@ namespace {
 template <class T>
 void apply_permutation(std::vector<T>& values, const std::vector<std::uint32_t>& new_to_old) {
   std::vector<T> out(values.size());
-  for (std::size_t k = 0; k < new_to_old.size(); ++k) out[k] = values[new_to_old[k]];
+  const std::size_t n = new_to_old.size();
+  // A gather: each k writes its own element (the same result on any number of threads).
+#pragma omp parallel for schedule(static) if (n > 8192)
+  for (std::size_t k = 0; k < n; ++k) out[k] = values[new_to_old[k]];
   values.swap(out);
 }
 }  // namespace

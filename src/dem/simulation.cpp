@@ -291,7 +291,7 @@ void Simulation::rebuild_lists() {
   ++rebuilds_since_reorder_;
   if (reorder) {
     p_.permute(cells.order);
-    cells = sort_into_cells(p_.position, dom, cell);
+    cells = in_cell_order(std::move(cells));
   }
   if (decomposition_) {
     ghosts_ = decomposition_->exchange_ghosts(p_, cell);

@@ -2,10 +2,13 @@
 // what failed, where, and what to change.
 #include <gtest/gtest.h>
 
+#include <omp.h>
+
 #include <string>
 
 #include "core/errors.hpp"
 #include "dem/simulation.hpp"
+#include "dem/wall_list.hpp"
 #include "test_support.hpp"
 
 using namespace trapdem;
@@ -112,4 +115,35 @@ TEST(Guards, OverlapBlowUpAtWallNamesWallAndItsStiffness) {
   EXPECT_TRUE(contains(message, "particle id 20")) << message;
   EXPECT_TRUE(contains(message, "wall 'soft floor' contact law (0.5 N/m)")) << message;
   EXPECT_FALSE(contains(message, "1e+04 N/m")) << message;
+}
+
+// A particle within reach of more walls than a wall list holds (kMaxWallCandidates) is refused by
+// name, whichever thread's block it falls in: the list is built by blocks of particles in parallel.
+TEST(Guards, AParticleWithinReachOfTooManyWallsIsNamedOnAnyThreadCount) {
+  Particles p;
+  for (int i = 0; i < 40; ++i) p.add(100 + i, {0.01 * (i - 20), 0.0, 0.05}, 0.001, 2500.0);  // far from every wall
+  p.add(7, {0.0, 0.0, 0.0011}, 0.001, 2500.0);  // just above the origin, where the walls meet
+  std::vector<Wall> walls;
+  const ContactLaw law = frictionless_law(1e5, 0.5);
+  for (std::uint32_t k = 0; k <= kMaxWallCandidates; ++k) {
+    const double tilt = 0.01 * k;  // planes through the origin, nearly horizontal: all within reach
+    walls.push_back(Wall::plane("w" + std::to_string(k), {0, 0, 0}, {tilt, 0.0, 1.0}, law));
+  }
+  for (int threads : {1, 3}) {
+    const int saved = omp_get_max_threads();
+    omp_set_num_threads(threads);
+    WallList list;
+    try {
+      build_wall_candidates(p, p.size(), walls, 0.0002, list);
+      ADD_FAILURE() << "no error on " << threads << " threads";
+    } catch (const InputError& e) {
+      EXPECT_TRUE(contains(e.what(), "particle id 7 is within reach of 17 walls")) << e.what();
+    }
+    omp_set_num_threads(saved);
+  }
+  // Without the extra wall the list holds the particle's 16 and nobody else's.
+  walls.pop_back();
+  WallList list;
+  build_wall_candidates(p, p.size(), walls, 0.0002, list);
+  EXPECT_EQ(list.first.back(), kMaxWallCandidates);
 }

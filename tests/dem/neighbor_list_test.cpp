@@ -128,3 +128,20 @@ TEST(NeighborList, StrayParticleFarAwayMatchesBruteForce) {
   const PairSet pairs = cell_list_pairs(p, big, 0.0002);
   EXPECT_TRUE(pairs.count({400, 401}));
 }
+
+// The engine re-orders the particles by the sort and then takes the sort of the re-ordered
+// particles from it (in_cell_order) instead of sorting again: it must be what sorting gives.
+TEST(NeighborList, TheSortOfReorderedParticlesIsTheSortAgain) {
+  const Domain region = box(0.01);
+  Particles p = random_cloud(900, region, 0.0004, 11);
+  const double cell = 2.0 * 0.0012 + 0.0002;
+  const CellSort sorted = sort_into_cells(p.position, region, cell);
+  p.permute(sorted.order);
+  const CellSort again = sort_into_cells(p.position, region, cell);
+  const CellSort derived = in_cell_order(sorted);
+  EXPECT_EQ(derived.cell_of, again.cell_of);
+  EXPECT_EQ(derived.cell_start, again.cell_start);
+  EXPECT_EQ(derived.order, again.order);
+  EXPECT_EQ(derived.grid.total(), again.grid.total());
+  EXPECT_TRUE(std::is_sorted(derived.cell_of.begin(), derived.cell_of.end()));
+}
