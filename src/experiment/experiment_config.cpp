@@ -205,6 +205,11 @@ double count_deposit_height(const ExperimentConfig& e) {
          (e.pluviation.packing_fraction * e.box.width * e.box.depth);
 }
 
+// particles.density (kg/m^3): from() and specimen_from() read it alike.
+double read_density(Config& particles, double fallback) {
+  return particles.get_double("density", fallback, "kg/m^3", Range::open_closed(0.0, kMaxDensity));
+}
+
 // [centrifuge]: read only when the table is there, so that a run in uniform gravity records no
 // centrifuge key (and its resume identity is what it was). The model's height is the fill height,
 // else the deposit of the count; a packing's top replaces it once the packing is read.
@@ -355,7 +360,7 @@ ExperimentConfig ExperimentConfig::from(Config& c) {
   read_specimen(c, e);
 
   Config particles = c.get_table("particles");
-  e.material.density = particles.get_double("density", e.material.density, "kg/m^3", Range::open_closed(0.0, kMaxDensity));
+  e.material.density = read_density(particles, e.material.density);
   e.material.sizes = read_sizes(particles);
   if (e.material.sizes.max_diameter() * 3.0 > e.box.depth && !e.box.periodic_depth) {
     const char* size_key = particles.has("grading") ? "grading" : (particles.has("max_diameter") ? "max_diameter" : "diameter");
@@ -472,7 +477,7 @@ ExperimentConfig ExperimentConfig::specimen_from(Config& c) {
   // The weight the deposit is under (trapdem deposit): the solid's density and the frame. A run's
   // resolved.toml records the model height its frame used (a packing's top, for a run from one).
   Config particles = c.get_table("particles");
-  e.material.density = particles.get_double("density", e.material.density, "kg/m^3", Range::open_closed(0.0, kMaxDensity));
+  e.material.density = read_density(particles, e.material.density);
   read_centrifuge(c, e);
   if (e.centrifuge.enabled && c.has("derived")) {
     Config derived = c.get_table("derived");
