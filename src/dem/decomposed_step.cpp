@@ -19,12 +19,12 @@ void Simulation::set_decomposition(std::unique_ptr<Decomposition> decomposition)
     throw InputError("domain: a periodic x axis is not supported across ranks (the slabs split x); make x bounded");
   decomposition_ = std::move(decomposition);
   if (decomposition_) {
-    pairs_ = PairList{};
-    wall_list_ = WallList{};
-    pair_contact_.clear();
+    state_.lists.pairs = PairList{};
+    state_.lists.walls = WallList{};
+    state_.lists.pair_contact.clear();
     history_pending_ = false;
-    decomposition_->adopt(p_, settings_.domain);
-    ghosts_ = 0;
+    decomposition_->adopt(state_.particles, settings_.domain);
+    state_.ghosts = 0;
     invalidate_lists();
   }
 }
@@ -38,7 +38,7 @@ int Simulation::kick_owned() {
   const std::size_t n = owned_count();
   int any_bad = 0;
   if (frame_) {  // a loop of its own: the uniform-gravity loop below stays as it was
-    const FrameSecondHalfKick in_frame{kick, p_.position.data(), FrameKick(*frame_, time_, 0.5 * dt_)};
+    const FrameSecondHalfKick in_frame{kick, state_.particles.position.data(), FrameKick(*frame_, time_, 0.5 * dt_)};
 #pragma omp parallel for schedule(static) reduction(| : any_bad)
     for (std::size_t i = 0; i < n; ++i) any_bad |= in_frame(i);
     return any_bad;

@@ -15,13 +15,15 @@
 namespace trapdem {
 
 std::string Simulation::describe_particle(std::uint32_t i) const {
-  const Vec3& x = p_.position[i];
-  const Vec3& v = p_.velocity[i];
+  const Particles& p = state_.particles;
+  const Vec3& x = p.position[i];
+  const Vec3& v = p.velocity[i];
   return fmt::format("particle id {} (radius {:.4g} m) at ({:.6g}, {:.6g}, {:.6g}) m moving at ({:.4g}, {:.4g}, {:.4g}) m/s",
-                     p_.id[i], p_.radius[i], x.x, x.y, x.z, v.x, v.y, v.z);
+                     p.id[i], p.radius[i], x.x, x.y, x.z, v.x, v.y, v.z);
 }
 
 void Simulation::check_stability() const {
+  const Particles& p = state_.particles;
   if (bad_particle_ < 0 && escaped_particle_ < 0 && !(max_overlap_seen_ > settings_.max_overlap_fraction)) return;
   // Only a failing run gets here: the message costs a scan of the masses and a string.
   const std::string when = fmt::format("step {} (t = {:.6g} s, dt = {:.4g} s, critical step {:.4g} s)", stats_.steps,
@@ -47,24 +49,24 @@ void Simulation::check_stability() const {
     const ContactLaw* governing = &law_;
     double worst = 0.0;
     const Domain& dom = settings_.domain;
-    for (std::uint32_t i = 0; i + 1 < pairs_.first.size(); ++i) {
-      for (std::uint32_t k = pairs_.first[i]; k < pairs_.first[i + 1]; ++k) {
-        const std::uint32_t j = pairs_.partner[k];
-        const double ov = p_.radius[i] + p_.radius[j] - norm(dom.minimum_image(p_.position[i] - p_.position[j]));
-        const double frac = ov / std::min(p_.radius[i], p_.radius[j]);
+    for (std::uint32_t i = 0; i + 1 < state_.lists.pairs.first.size(); ++i) {
+      for (std::uint32_t k = state_.lists.pairs.first[i]; k < state_.lists.pairs.first[i + 1]; ++k) {
+        const std::uint32_t j = state_.lists.pairs.partner[k];
+        const double ov = p.radius[i] + p.radius[j] - norm(dom.minimum_image(p.position[i] - p.position[j]));
+        const double frac = ov / std::min(p.radius[i], p.radius[j]);
         if (frac > worst) {
           worst = frac;
-          where = fmt::format("the contact of particle ids {} and {}", p_.id[i], p_.id[j]);
+          where = fmt::format("the contact of particle ids {} and {}", p.id[i], p.id[j]);
         }
       }
     }
-    for (std::uint32_t i = 0; i + 1 < wall_list_.first.size(); ++i) {
-      for (std::uint32_t k = wall_list_.first[i]; k < wall_list_.first[i + 1]; ++k) {
-        const Wall& w = walls_[wall_list_.wall[k]];
-        const double frac = (p_.radius[i] - wall_proximity(w, p_.position[i]).distance) / p_.radius[i];
+    for (std::uint32_t i = 0; i + 1 < state_.lists.walls.first.size(); ++i) {
+      for (std::uint32_t k = state_.lists.walls.first[i]; k < state_.lists.walls.first[i + 1]; ++k) {
+        const Wall& w = state_.walls[state_.lists.walls.wall[k]];
+        const double frac = (p.radius[i] - wall_proximity(w, p.position[i]).distance) / p.radius[i];
         if (frac > worst) {
           worst = frac;
-          where = fmt::format("the contact of particle id {} with wall '{}'", p_.id[i], w.name);
+          where = fmt::format("the contact of particle id {} with wall '{}'", p.id[i], w.name);
           stiffness_of = fmt::format("wall '{}'", w.name);
           governing = &w.law;
         }
@@ -74,7 +76,7 @@ void Simulation::check_stability() const {
     // stiffer contact would make it worse.
     const double limit = 2.0 * critical_time_step();
     std::vector<const ContactLaw*> wall_laws;
-    for (const Wall& w : walls_) wall_laws.push_back(&w.law);
+    for (const Wall& w : state_.walls) wall_laws.push_back(&w.law);
     const std::string cause =
         dt_ > limit
             ? fmt::format("the time step ({:.4g} s) exceeds the stability limit 2 {} = {:.4g} s: "
@@ -90,35 +92,38 @@ void Simulation::check_stability() const {
 
 double Simulation::translational_kinetic_energy() const {
   double e = 0.0;
-  for (std::size_t i = 0; i < owned_count(); ++i) e += 0.5 * p_.mass[i] * norm2(p_.velocity[i]);
+  const Particles& p = state_.particles;
+  for (std::size_t i = 0; i < owned_count(); ++i) e += 0.5 * p.mass[i] * norm2(p.velocity[i]);
   return global_sum(e);
 }
 
 double Simulation::rotational_kinetic_energy() const {
   double e = 0.0;
-  for (std::size_t i = 0; i < owned_count(); ++i) e += 0.5 / p_.inv_inertia[i] * norm2(p_.angular_velocity[i]);
+  const Particles& p = state_.particles;
+  for (std::size_t i = 0; i < owned_count(); ++i) e += 0.5 / p.inv_inertia[i] * norm2(p.angular_velocity[i]);
   return global_sum(e);
 }
 
 double Simulation::potential_energy(double reference_height) const {
+  const Particles& p = state_.particles;
   const Vec3 g = gravity();
   const double g_len = norm(g);
   double e = 0.0;
   if (g_len > 0.0) {
     const Vec3 up = -g / g_len;
     for (std::size_t i = 0; i < owned_count(); ++i)
-      e += p_.mass[i] * g_len * (dot(p_.position[i], up) - reference_height);
+      e += p.mass[i] * g_len * (dot(p.position[i], up) - reference_height);
   }
   if (frame_) {
     const Vec3 level{frame_->axis_point.x, frame_->axis_point.y, reference_height};
-    e += frame_potential_energy(p_, owned_count(), *frame_, time_, norm(frame_->radius_vector(level)));
+    e += frame_potential_energy(p, owned_count(), *frame_, time_, norm(frame_->radius_vector(level)));
   }
   return global_sum(e);
 }
 
 std::size_t Simulation::contact_count() const {
   std::size_t c = 0;
-  for (std::uint32_t slot : pair_contact_) c += slot != kNoContact ? 1 : 0;
+  for (std::uint32_t slot : state_.lists.pair_contact) c += slot != kNoContact ? 1 : 0;
   return decomposition_ ? std::size_t(std::llround(global_sum(double(c)))) : c;
 }
 

@@ -57,16 +57,19 @@ void Simulation::rebuild_lists_agreed() {
 void Simulation::update_ghosts() {
   if (!decomposition_) return;
   const double started = omp_get_wtime();
-  decomposition_->update_ghosts(p_);
+  decomposition_->update_ghosts(state_.particles);
   stats_.exchange_seconds += omp_get_wtime() - started;
 }
 
 void Simulation::forces(bool fused_kick) {
-  contacts(fused_kick);
+  const SecondHalfKick kick = second_half_kick();
+  const ForcePassResult pass = backend_->compute_forces(state_, {settings_.domain, dt_, fused_kick ? &kick : nullptr});
+  max_overlap_seen_ = pass.max_overlap_fraction;
+  bad_particle_ = pass.kicked_not_finite ? first_non_finite_particle() : -1;
   if (!decomposition_) return;
   const double started = omp_get_wtime();
-  decomposition_->return_ghost_forces(p_);
-  decomposition_->sum_wall_loads(walls_);
+  decomposition_->return_ghost_forces(state_.particles);
+  decomposition_->sum_wall_loads(state_.walls);
   stats_.exchange_seconds += omp_get_wtime() - started;
 }
 

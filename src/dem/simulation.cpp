@@ -10,7 +10,6 @@
 #include <fmt/format.h>
 
 #include "dem/cell_sort.hpp"
-#include "dem/contact_sweep.hpp"
 #include "core/errors.hpp"
 #include "dem/decomposition.hpp"
 #include "dem/integrator.hpp"
@@ -19,11 +18,11 @@
 namespace trapdem {
 
 Simulation::Simulation(Particles particles, const ContactLaw& particle_law, SimulationSettings settings)
-    : p_(std::move(particles)), law_(particle_law), settings_(settings), sweep_(std::make_unique<ContactSweep>()) {
+    : backend_(make_threaded_cpu_backend()), law_(particle_law), settings_(settings) {
+  state_.particles = std::move(particles);
   law_.validate("particle contact law");
-  sweep_->particle_params = law_params(law_, law_);
-  sweep_->particle_choices = law_choices(law_);
-  contacts_ = contacts_next_ = PairHistories(keeps_rolling_spring(sweep_->particle_choices));
+  backend_->set_particle_law(law_params(law_, law_), law_choices(law_));
+  state_.lists.contacts = state_.lists.contacts_next = PairHistories(keeps_rolling_spring(law_choices(law_)));
   set_gravity(Vec3{0.0, 0.0, -9.81});
   for (int a = 0; a < 3; ++a) {
     if (!(settings_.domain.upper[a] > settings_.domain.lower[a]))
@@ -32,14 +31,15 @@ Simulation::Simulation(Particles particles, const ContactLaw& particle_law, Simu
   }
   if (settings_.skin > 0.0) {
     skin_ = settings_.skin;
-  } else if (!p_.empty()) {
-    skin_ = 0.2 * 2.0 * std::accumulate(p_.radius.begin(), p_.radius.end(), 0.0) / double(p_.size());
+  } else if (!state_.particles.empty()) {
+    const std::vector<double>& r = state_.particles.radius;
+    skin_ = 0.2 * 2.0 * std::accumulate(r.begin(), r.end(), 0.0) / double(r.size());
   } else {
     throw InputError("simulation: the Verlet skin cannot be derived without particles; set settings.skin (m)");
   }
   if (settings_.time_step > 0.0) {
     dt_ = settings_.time_step;
-  } else if (!p_.empty()) {
+  } else if (!state_.particles.empty()) {
     dt_ = settings_.time_step_fraction * critical_time_step();
   } else {
     throw InputError("simulation: the time step cannot be derived without particles; set settings.time_step (s)");
@@ -79,14 +79,22 @@ std::size_t Simulation::add_wall(Wall wall) {
   wall.law.validate(where);
   if (wall.law.normal_model == NormalModel::hertz)  // the contact's other body: the particles' material
     law_.validate_material(fmt::format("particle contact law (the particles' material, for the Hertz law of {})", where));
-  sweep_->wall_laws.add(law_params(wall.law, law_), law_choices(wall.law));
-  walls_.push_back(std::move(wall));
+  backend_->add_wall_law(law_params(wall.law, law_), law_choices(wall.law));
+  state_.walls.push_back(std::move(wall));
   invalidate_lists();
-  return walls_.size() - 1;
+  return state_.walls.size() - 1;
+}
+
+void Simulation::set_force_backend(std::unique_ptr<ForceBackend> backend) {
+  if (setup_done_) throw InputError("a force back end is set before the first step");
+  if (!backend) throw InputError("set_force_backend: no back end given");
+  backend->set_particle_law(law_params(law_, law_), law_choices(law_));
+  for (const Wall& w : state_.walls) backend->add_wall_law(law_params(w.law, law_), law_choices(w.law));
+  backend_ = std::move(backend);
 }
 
 void Simulation::set_wall_velocity(std::size_t k, std::function<Vec3(double)> velocity) {
-  walls_.at(k).velocity = std::move(velocity);
+  state_.walls.at(k).velocity = std::move(velocity);
 }
 
 void Simulation::set_wall_velocity(std::size_t k, const Vec3& velocity) {
@@ -95,7 +103,7 @@ void Simulation::set_wall_velocity(std::size_t k, const Vec3& velocity) {
 
 void Simulation::restore_wall_state(std::size_t k, const Vec3& origin, const Vec3& displacement, const Vec3& force,
                                     const Vec3& torque, const Vec3& current_velocity) {
-  Wall& w = walls_.at(k);
+  Wall& w = state_.walls.at(k);
   w.origin = origin;
   w.displacement = displacement;
   w.force = force;
@@ -104,8 +112,8 @@ void Simulation::restore_wall_state(std::size_t k, const Vec3& origin, const Vec
 }
 
 std::size_t Simulation::find_wall(const std::string& name) const {
-  for (std::size_t k = 0; k < walls_.size(); ++k)
-    if (walls_[k].name == name) return k;
+  for (std::size_t k = 0; k < state_.walls.size(); ++k)
+    if (state_.walls[k].name == name) return k;
   throw InputError(fmt::format("no wall named '{}'", name));
 }
 
@@ -113,34 +121,37 @@ void Simulation::add_particle(std::int64_t id, const Vec3& x, double radius, dou
   if (!(radius > 0.0) || !(density > 0.0))
     throw InputError(fmt::format("particle {}: radius ({} m) and density ({} kg/m3) must be positive", id, radius, density));
   drop_ghosts();  // the owned particles come first
-  p_.add(id, x, radius, density, v);  // appending keeps the existing indices: the lists' history stays valid
+  // Appending keeps the existing indices: the lists' history stays valid.
+  state_.particles.add(id, x, radius, density, v);
   invalidate_lists();
 }
 
 void Simulation::remove_particles(const std::vector<std::uint32_t>& indices) {
+  Particles& p = state_.particles;
   if (indices.empty()) return;
-  if (!history_pending_ && !pairs_.first.empty()) {
-    pending_history_.store_pairs(pairs_, pair_contact_, contacts_, p_.id);
-    pending_history_.store_walls(wall_list_, p_.id);
+  if (!history_pending_ && !state_.lists.pairs.first.empty()) {
+    pending_history_.store_pairs(state_.lists.pairs, state_.lists.pair_contact, state_.lists.contacts, p.id);
+    pending_history_.store_walls(state_.lists.walls, p.id);
     history_pending_ = true;
   }
   std::vector<char> drop(owned_count(), 0);
   for (auto i : indices) drop.at(i) = 1;
   drop_ghosts();
   std::vector<std::uint32_t> keep;
-  for (std::uint32_t i = 0; i < p_.size(); ++i)
+  for (std::uint32_t i = 0; i < p.size(); ++i)
     if (!drop[i]) keep.push_back(i);
-  p_.permute(keep);
+  p.permute(keep);
   invalidate_lists();
 }
 
 double Simulation::critical_time_step() const {
-  if (p_.empty()) return std::numeric_limits<double>::infinity();
+  const Particles& p = state_.particles;
+  if (p.empty()) return std::numeric_limits<double>::infinity();
   std::vector<const ContactLaw*> wall_laws;
-  for (const Wall& w : walls_) wall_laws.push_back(&w.law);
+  for (const Wall& w : state_.walls) wall_laws.push_back(&w.law);
   double t = std::numeric_limits<double>::infinity();
-  for (std::size_t i = 0; i < p_.size(); ++i)
-    t = std::min(t, trapdem::critical_time_step(law_, wall_laws, p_.mass[i], p_.radius[i]));
+  for (std::size_t i = 0; i < p.size(); ++i)
+    t = std::min(t, trapdem::critical_time_step(law_, wall_laws, p.mass[i], p.radius[i]));
   return t;
 }
 
@@ -154,10 +165,11 @@ void Simulation::run(std::int64_t steps) {
 // half a step old, which is first order and standard in DEM. The exchanges of a decomposition
 // (halo.cpp) sit between the parts and do nothing on one process.
 void Simulation::step() {
-  // The fused kick: the second half kick inside the contact sweep, as soon as a particle's force is
-  // complete (contact_sweep.cpp). Not on ranks (a force is complete only once the ghosts' shares
-  // are back) nor in a rotating frame (its kick needs the positions after the sweep).
-  const bool fused_kick = !decomposition_ && !frame_;
+  // The fused kick: the second half kick inside the force pass, as soon as a particle's force is
+  // complete, where the back end can (ForceBackend::fuses_second_half_kick). Not on ranks (a force
+  // is complete only once the ghosts' shares are back) nor in a rotating frame (its kick needs the
+  // positions after the sweep).
+  const bool fused_kick = backend_->fuses_second_half_kick() && !decomposition_ && !frame_;
   if (!setup_done_) {  // forces of the initial state, so the first half kick sees them
     rebuild_lists_agreed();
     forces(false);
@@ -171,77 +183,95 @@ void Simulation::step() {
   }
   forces(fused_kick);
   if (!fused_kick) bad_particle_ = kick_owned() ? first_non_finite_particle() : -1;  // second half kick
-  stats_.ghost_steps += std::int64_t(ghosts_);
+  stats_.ghost_steps += std::int64_t(state_.ghosts);
   ++stats_.steps;
   check_stability_agreed();
 }
 
-void Simulation::find_particles_near_walls() {
-  particles_near_walls_.clear();
-  for (std::uint32_t i = 0; i + 1 < wall_list_.first.size(); ++i)
-    if (wall_list_.first[i + 1] > wall_list_.first[i]) particles_near_walls_.push_back(i);
+SecondHalfKick Simulation::second_half_kick() {
+  Particles& p = state_.particles;
+  return {p.velocity.data(),    p.angular_velocity.data(), p.force.data(), p.torque.data(),
+          p.inv_mass.data(),    p.inv_inertia.data(),      gravity(),      0.5 * dt_,
+          !settings_.freeze_rotation, spin_retention(law_, dt_)};
 }
 
-// partner_reach_[i]: one past the highest partner of the owners below i (0 when none), for the
-// second half kick in the sweep (Simulation::contacts).
+std::int64_t Simulation::first_non_finite_particle() const {
+  const Particles& p = state_.particles;
+  for (std::size_t i = 0; i < owned_count(); ++i)
+    if (!is_finite(p.velocity[i]) || !is_finite(p.angular_velocity[i])) return std::int64_t(i);
+  return -1;
+}
+
+void Simulation::find_particles_near_walls() {
+  state_.lists.particles_near_walls.clear();
+  for (std::uint32_t i = 0; i + 1 < state_.lists.walls.first.size(); ++i)
+    if (state_.lists.walls.first[i + 1] > state_.lists.walls.first[i]) state_.lists.particles_near_walls.push_back(i);
+}
+
+// ContactLists::partner_reach[i]: one past the highest partner of the owners below i (0 when none),
+// for a back end's fused second half kick.
 void Simulation::find_partner_reach() {
-  const std::size_t n = pairs_.first.empty() ? 0 : pairs_.first.size() - 1;
-  partner_reach_.assign(n + 1, 0);
+  const PairList& pairs = state_.lists.pairs;
+  std::vector<std::uint32_t>& reach = state_.lists.partner_reach;
+  const std::size_t n = pairs.first.empty() ? 0 : pairs.first.size() - 1;
+  reach.assign(n + 1, 0);
   for (std::size_t i = 0; i < n; ++i) {
-    const std::uint32_t highest =
-        pairs_.first[i + 1] > pairs_.first[i] ? pairs_.partner[pairs_.first[i + 1] - 1] + 1 : 0;
-    partner_reach_[i + 1] = std::max(partner_reach_[i], highest);
+    const std::uint32_t highest = pairs.first[i + 1] > pairs.first[i] ? pairs.partner[pairs.first[i + 1] - 1] + 1 : 0;
+    reach[i + 1] = std::max(reach[i], highest);
   }
 }
 
 // Room for a history per listed pair in both arrays (a thread's block writes from index
 // first[begin] on, and every listed pair may touch). Grown only: the pages of a larger earlier
-// list stay, and nothing is written but the empty entry at index pairs_.size(), where a contact
-// that has just formed reads its history from.
+// list stay, and nothing is written but the empty entry at index pairs.size(), where a contact that
+// has just formed reads its history from.
 void Simulation::size_contact_arrays() {
-  const std::size_t needed = pairs_.size() + 1;
-  contacts_.grow_to(needed);
-  contacts_next_.grow_to(needed);
-  contacts_.set(pairs_.size(), ContactHistory{});
-  contacts_next_.set(pairs_.size(), ContactHistory{});
+  const std::size_t needed = state_.lists.pairs.size() + 1;
+  state_.lists.contacts.grow_to(needed);
+  state_.lists.contacts_next.grow_to(needed);
+  state_.lists.contacts.set(state_.lists.pairs.size(), ContactHistory{});
+  state_.lists.contacts_next.set(state_.lists.pairs.size(), ContactHistory{});
 }
 
 // The per-listed-pair history of a checkpoint into the compact form.
 void Simulation::compact_pair_history() {
   size_contact_arrays();
-  pair_contact_.assign(pairs_.size(), kNoContact);
+  state_.lists.pair_contact.assign(state_.lists.pairs.size(), kNoContact);
   std::uint32_t found = 0;
-  for (std::size_t k = 0; k < pairs_.history.size(); ++k) {
-    if (!pairs_.history[k].touching()) continue;
-    contacts_.set(found, pairs_.history[k]);
-    pair_contact_[k] = found++;
+  for (std::size_t k = 0; k < state_.lists.pairs.history.size(); ++k) {
+    if (!state_.lists.pairs.history[k].touching()) continue;
+    state_.lists.contacts.set(found, state_.lists.pairs.history[k]);
+    state_.lists.pair_contact[k] = found++;
   }
-  pairs_.history.clear();
-  pairs_.history.shrink_to_fit();
+  state_.lists.pairs.history.clear();
+  state_.lists.pairs.history.shrink_to_fit();
 }
 
 std::vector<ContactHistory> Simulation::pair_history() const {
-  std::vector<ContactHistory> history(pairs_.size());
-  for (std::size_t k = 0; k < pair_contact_.size(); ++k)
-    if (pair_contact_[k] != kNoContact) history[k] = contacts_.get(pair_contact_[k]);
+  const ContactLists& lists = state_.lists;
+  std::vector<ContactHistory> history(lists.pairs.size());
+  for (std::size_t k = 0; k < lists.pair_contact.size(); ++k)
+    if (lists.pair_contact[k] != kNoContact) history[k] = lists.contacts.get(lists.pair_contact[k]);
   return history;
 }
 
 PairList Simulation::pairs() const {
-  PairList copy{pairs_.first, pairs_.partner, pair_history()};
+  PairList copy{state_.lists.pairs.first, state_.lists.pairs.partner, pair_history()};
   return copy;
 }
 
 void Simulation::integrate_positions() {
+  Particles& p = state_.particles;
   // Particles added since the last build have no reference position: the lists are invalid then
   // and will be rebuilt anyway.
-  const bool track = lists_valid_ && position_at_build_.size() == p_.size();
-  if (frame_) frame_first_half_kick(p_, owned_count(), FrameKick(*frame_, time_, 0.5 * dt_), 0.5 * dt_);
-  const DriftReport drift = first_half_kick_and_drift(p_, owned_count(), track ? position_at_build_.data() : nullptr, gravity(), dt_,
+  const bool track = lists_valid_ && state_.lists.position_at_build.size() == p.size();
+  if (frame_) frame_first_half_kick(p, owned_count(), FrameKick(*frame_, time_, 0.5 * dt_), 0.5 * dt_);
+  const Vec3* at_build = track ? state_.lists.position_at_build.data() : nullptr;
+  const DriftReport drift = first_half_kick_and_drift(p, owned_count(), at_build, gravity(), dt_,
                                                       settings_.domain, !settings_.freeze_rotation);
   displacements_ = drift.displacements;
   escaped_particle_ = drift.escaped;
-  move_walls(walls_, time_, dt_);
+  move_walls(state_.walls, time_, dt_);
   time_ += dt_;
 }
 
@@ -253,12 +283,14 @@ void Simulation::integrate_positions() {
 bool Simulation::lists_outdated(const DisplacementsSinceBuild& all) const {
   if (!lists_valid_ || all.pair_bound() > skin_) return true;
   double wall_moved2 = 0.0;
-  for (std::size_t k = 0; k < walls_.size(); ++k)
-    wall_moved2 = std::max(wall_moved2, norm2(walls_[k].displacement - wall_displacement_at_build_[k]));
+  for (std::size_t k = 0; k < state_.walls.size(); ++k)
+    wall_moved2 =
+        std::max(wall_moved2, norm2(state_.walls[k].displacement - state_.lists.wall_displacement_at_build[k]));
   return std::sqrt(all.max_length2) + std::sqrt(wall_moved2) > skin_;
 }
 
 void Simulation::rebuild_lists() {
+  Particles& p = state_.particles;
   const double started = omp_get_wtime();
   ++stats_.rebuilds;
   const Domain& dom = settings_.domain;
@@ -267,12 +299,12 @@ void Simulation::rebuild_lists() {
     archive = std::move(pending_history_);
     history_pending_ = false;
   } else {
-    archive.store_pairs(pairs_, pair_contact_, contacts_, p_.id);
-    archive.store_walls(wall_list_, p_.id);
+    archive.store_pairs(state_.lists.pairs, state_.lists.pair_contact, state_.lists.contacts, p.id);
+    archive.store_walls(state_.lists.walls, p.id);
   }
-  wrap_periodic(p_, dom);
+  wrap_periodic(p, dom);
 
-  double r_max = p_.empty() ? 0.0 : *std::max_element(p_.radius.begin(), p_.radius.end());
+  double r_max = p.empty() ? 0.0 : *std::max_element(p.radius.begin(), p.radius.end());
   if (decomposition_) r_max = decomposition_->max(r_max);
   const double cell = 2.0 * r_max + skin_;  // m, also the ghosts' range on a decomposition
   for (int a = 0; a < 3; ++a) {
@@ -282,64 +314,67 @@ void Simulation::rebuild_lists() {
           dom.length(a), cell));
   }
   if (decomposition_) {  // the ghosts go (drop_ghosts archived nothing more: the archive holds it all)
-    p_.truncate(owned_count());
-    ghosts_ = 0;
-    decomposition_->migrate(p_, archive, cell);
+    p.truncate(owned_count());
+    state_.ghosts = 0;
+    decomposition_->migrate(p, archive, cell);
   }
-  CellSort cells = sort_into_cells(p_.position, dom, cell);
+  CellSort cells = sort_into_cells(p.position, dom, cell);
   const bool reorder = settings_.reorder_every > 0 && rebuilds_since_reorder_ % settings_.reorder_every == 0;
   ++rebuilds_since_reorder_;
   if (reorder) {
-    p_.permute(cells.order);
+    p.permute(cells.order);
     cells = in_cell_order(std::move(cells));
   }
   if (decomposition_) {
-    ghosts_ = decomposition_->exchange_ghosts(p_, cell);
-    if (ghosts_ > 0) cells = sort_into_cells(p_.position, dom, cell);
+    state_.ghosts = decomposition_->exchange_ghosts(p, cell);
+    if (state_.ghosts > 0) cells = sort_into_cells(p.position, dom, cell);
   }
-  build_pairs(p_, cells, dom, skin_, pairs_);
-  if (ghosts_ > 0) keep_pairs_computed_here(pairs_, owned_count(), p_.id);
+  build_pairs(p, cells, dom, skin_, state_.lists.pairs);
+  if (state_.ghosts > 0) keep_pairs_computed_here(state_.lists.pairs, owned_count(), p.id);
   size_contact_arrays();
-  archive.restore_pairs(pairs_, p_.id, pair_contact_, contacts_);
-  build_wall_candidates(p_, owned_count(), walls_, skin_, wall_list_);
-  archive.restore_walls(wall_list_, p_.id);
+  archive.restore_pairs(state_.lists.pairs, p.id, state_.lists.pair_contact, state_.lists.contacts);
+  build_wall_candidates(p, owned_count(), state_.walls, skin_, state_.lists.walls);
+  archive.restore_walls(state_.lists.walls, p.id);
 
   find_particles_near_walls();
   find_partner_reach();
-  position_at_build_ = p_.position;
-  wall_displacement_at_build_.resize(walls_.size());
-  for (std::size_t k = 0; k < walls_.size(); ++k) wall_displacement_at_build_[k] = walls_[k].displacement;
+  state_.lists.position_at_build = p.position;
+  state_.lists.wall_displacement_at_build.resize(state_.walls.size());
+  for (std::size_t k = 0; k < state_.walls.size(); ++k)
+    state_.lists.wall_displacement_at_build[k] = state_.walls[k].displacement;
   lists_valid_ = true;
   stats_.rebuild_seconds += omp_get_wtime() - started;
 }
 
 Simulation::ListState Simulation::list_state() const {
-  return {pairs(), wall_list_, position_at_build_, wall_displacement_at_build_, rebuilds_since_reorder_};
+  const ContactLists& lists = state_.lists;
+  return {pairs(), lists.walls, lists.position_at_build, lists.wall_displacement_at_build, rebuilds_since_reorder_};
 }
 
 void Simulation::drop_ghosts() {
-  if (ghosts_ == 0) return;
-  if (!history_pending_ && !pairs_.first.empty()) {
-    pending_history_.store_pairs(pairs_, pair_contact_, contacts_, p_.id);
-    pending_history_.store_walls(wall_list_, p_.id);
+  Particles& p = state_.particles;
+  if (state_.ghosts == 0) return;
+  if (!history_pending_ && !state_.lists.pairs.first.empty()) {
+    pending_history_.store_pairs(state_.lists.pairs, state_.lists.pair_contact, state_.lists.contacts, p.id);
+    pending_history_.store_walls(state_.lists.walls, p.id);
     history_pending_ = true;
   }
-  p_.truncate(owned_count());
-  ghosts_ = 0;
+  p.truncate(owned_count());
+  state_.ghosts = 0;
   invalidate_lists();
 }
 
 void Simulation::restore(double time, const SimulationStats& stats, ListState lists, std::size_t ghosts) {
-  if (ghosts > p_.size() || (ghosts > 0 && !decomposition_))
-    throw InputError(fmt::format("restore: {} ghosts among {} particles{}", ghosts, p_.size(),
+  if (ghosts > state_.particles.size() || (ghosts > 0 && !decomposition_))
+    throw InputError(fmt::format("restore: {} ghosts among {} particles{}", ghosts, state_.particles.size(),
                                  decomposition_ ? "" : " without a decomposition"));
-  ghosts_ = ghosts;
+  state_.ghosts = ghosts;
   time_ = time;
   stats_ = stats;
-  pairs_ = std::move(lists.pairs);
-  wall_list_ = std::move(lists.walls);
-  position_at_build_ = std::move(lists.position_at_build);
-  wall_displacement_at_build_ = std::move(lists.wall_displacement_at_build);
+  state_.lists.pairs = std::move(lists.pairs);
+  state_.lists.walls = std::move(lists.walls);
+  state_.lists.position_at_build = std::move(lists.position_at_build);
+  state_.lists.wall_displacement_at_build = std::move(lists.wall_displacement_at_build);
   rebuilds_since_reorder_ = lists.rebuilds_since_reorder;
   compact_pair_history();
   find_particles_near_walls();
@@ -352,15 +387,15 @@ void Simulation::restore(double time, const SimulationStats& stats, ListState li
 void Simulation::resume_from_histories(double time, const SimulationStats& stats, HistoryArchive histories) {
   time_ = time;
   stats_ = stats;
-  ghosts_ = 0;
-  pairs_ = PairList{};
-  wall_list_ = WallList{};
-  pair_contact_.clear();
+  state_.ghosts = 0;
+  state_.lists.pairs = PairList{};
+  state_.lists.walls = WallList{};
+  state_.lists.pair_contact.clear();
   if (decomposition_) {
     // Each rank keeps its particles, a pair's history with the lower id (the rank that computes the
     // pair, keep_pairs_computed_here) and a wall contact's with its particle.
-    decomposition_->adopt(p_, settings_.domain);
-    std::vector<std::int64_t> mine = p_.id;
+    decomposition_->adopt(state_.particles, settings_.domain);
+    std::vector<std::int64_t> mine = state_.particles.id;
     std::sort(mine.begin(), mine.end());
     auto here = [&](std::int64_t id) { return std::binary_search(mine.begin(), mine.end(), id); };
     std::erase_if(histories.pairs, [&](const HistoryArchive::PairRecord& r) { return !here(r.low); });

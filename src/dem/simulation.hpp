@@ -9,6 +9,8 @@
 
 #include "dem/contact_law.hpp"
 #include "dem/domain.hpp"
+#include "dem/engine_state.hpp"
+#include "dem/force_backend.hpp"
 #include "dem/history_archive.hpp"
 #include "dem/integrator.hpp"
 #include "dem/pair_histories.hpp"
@@ -42,8 +44,6 @@ struct SimulationStats {
   double exchange_seconds = 0.0;
 };
 
-struct ContactSweep;    // the engine's contact workspace (contact_sweep.hpp)
-struct SecondHalfKick;  // integrator.hpp
 class Decomposition;    // the parallel back end (decomposition.hpp)
 
 class Simulation {
@@ -69,8 +69,8 @@ class Simulation {
   // A wall's contact law is fixed when it is added (the engine keeps it in the form its loops
   // read); its motion is changed through the calls below, never by reference.
   std::size_t add_wall(Wall wall);
-  const Wall& wall(std::size_t k) const { return walls_.at(k); }
-  const std::vector<Wall>& walls() const { return walls_; }
+  const Wall& wall(std::size_t k) const { return state_.walls.at(k); }
+  const std::vector<Wall>& walls() const { return state_.walls; }
   std::size_t find_wall(const std::string& name) const;  // throws if absent
   // Prescribed velocity (m/s) as a function of time (s); an empty function fixes the wall.
   void set_wall_velocity(std::size_t k, std::function<Vec3(double)> velocity);
@@ -88,6 +88,11 @@ class Simulation {
   void step();
   void run(std::int64_t steps);
 
+  // The force back end (force_backend.hpp): the threaded CPU one unless another is set before the
+  // first step; the engine hands it the particle law and every wall's law.
+  void set_force_backend(std::unique_ptr<ForceBackend> backend);
+  const ForceBackend& force_backend() const { return *backend_; }
+
   // Runs this Simulation as one rank of a domain decomposition (decomposition.hpp; the MPI one is
   // src/parallel): every rank builds the same Simulation (same particles, walls, settings), then
   // attaches its rank's decomposition before the first step and keeps its share of the particles.
@@ -97,13 +102,13 @@ class Simulation {
 
   // particles() holds the owned particles first ([0, owned_count())), then, on a rank of a
   // decomposition, the ghosts (copies of other ranks' particles). Without one: all are owned.
-  const Particles& particles() const { return p_; }
-  std::size_t owned_count() const { return p_.size() - ghosts_; }
-  Particles& particles_mutable() { invalidate_lists(); return p_; }
+  const Particles& particles() const { return state_.particles; }
+  std::size_t owned_count() const { return state_.owned(); }
+  Particles& particles_mutable() { invalidate_lists(); return state_.particles; }
   const ContactLaw& particle_law() const { return law_; }
   const SimulationSettings& settings() const { return settings_; }
   PairList pairs() const;  // a copy, with each listed pair's contact history
-  const WallList& wall_candidates() const { return wall_list_; }
+  const WallList& wall_candidates() const { return state_.lists.walls; }
   const SimulationStats& stats() const { return stats_; }
   double time() const { return time_; }
   std::int64_t step_count() const { return stats_.steps; }
@@ -158,19 +163,14 @@ class Simulation {
   NextLists agree_on_next_lists();     // stop: a particle escaped on some rank
   void rebuild_lists_agreed();         // a failure on one rank thrown on every rank
   void update_ghosts();                // the ghosts' positions and velocities from their owners
-  void forces(bool fused_kick);        // the sweep, then the ghosts' shares and the wall loads summed
+  void forces(bool fused_kick);        // the back end's pass, then the ghosts' shares and the wall loads summed
   void check_stability_agreed();       // every rank throws the first failure, or none
   void drop_ghosts();            // their histories kept for the next rebuild
   int kick_owned();              // the second half kick of the owned particles (decomposed_step.cpp)
-  SecondHalfKick second_half_kick();  // this step's, for kick_owned and the fused sweep
+  SecondHalfKick second_half_kick();  // this step's, for kick_owned and a back end's fused kick
   double global_sum(double local) const;
   void rebuild_lists();
-  // Particle pairs and walls, and with kick the second half kick (contact_sweep.cpp).
-  void contacts(bool kick);
-  void add_deferred_shares();
-  int kick_after_deferred_shares(const SecondHalfKick& second_half_kick, int threads);
   std::int64_t first_non_finite_particle() const;
-  void sum_wall_loads(int threads);
   void check_stability() const;  // diagnostics.cpp
   void invalidate_lists() { lists_valid_ = false; }
   void find_particles_near_walls();
@@ -179,35 +179,19 @@ class Simulation {
   void compact_pair_history();
   std::string describe_particle(std::uint32_t i) const;
 
-  Particles p_;
+  EngineState state_;  // the particles, walls, lists and contact histories (engine_state.hpp)
+  std::unique_ptr<ForceBackend> backend_;  // the force passes over state_ (force_backend.hpp)
   ContactLaw law_;
   SimulationSettings settings_;
-  std::vector<Wall> walls_;
-  std::unique_ptr<ContactSweep> sweep_;  // the laws as the loops read them, per-thread batches
   std::unique_ptr<Decomposition> decomposition_;  // null: one process
-  std::size_t ghosts_ = 0;                        // the last ghosts_ particles of p_ are other ranks' copies
   std::function<Vec3(double)> gravity_;
   Vec3 constant_gravity_;
   bool gravity_is_constant_ = true;
   std::unique_ptr<RotatingFrame> frame_;  // null: uniform gravity only
 
-  PairList pairs_;
-  WallList wall_list_;
-  HistoryArchive pending_history_;            // archived before particles were removed
+  HistoryArchive pending_history_;  // archived before particles were removed
   bool history_pending_ = false;
-
-  std::vector<std::uint32_t> particles_near_walls_;  // ascending
-  std::vector<std::uint32_t> partner_reach_;         // per owner: one past the highest partner of those below
-  // The touching pairs' contact histories, compact (most listed pairs do not touch):
-  // pair_contact_[k] is pair k's index into contacts_, or kNoContact. Each step writes them anew,
-  // in pair order, into contacts_next_ and swaps: a thread's block writes from index first[begin]
-  // of the pair list on. The entry at index pairs_.size() of both stays empty: it is where a
-  // contact that has just formed reads its history from.
-  ContactSlots pair_contact_;
-  PairHistories contacts_, contacts_next_;
   std::vector<ContactHistory> pair_history() const;  // per listed pair, from the compact form
-  std::vector<Vec3> position_at_build_;
-  std::vector<Vec3> wall_displacement_at_build_;
   bool lists_valid_ = false;
   bool setup_done_ = false;
   std::int64_t rebuilds_since_reorder_ = 0;

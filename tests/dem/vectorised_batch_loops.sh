@@ -1,5 +1,5 @@
 #!/usr/bin/env bash
-# The contact law's batch loops (src/dem/pair_sweep.cpp, src/dem/wall_sweep.cpp: the loop after
+# The contact law's batch loops (src/dem/threaded_cpu/pair_sweep.cpp, src/dem/threaded_cpu/wall_sweep.cpp: the loop after
 # `#pragma GCC ivdep`) vectorise for every law instance the dispatch compiles. They carry about half
 # of a step's time, and a change inside the law that GCC cannot turn into vector code (an aggregate
 # copy, a Vec3 passed by reference into an inlined helper) makes every run silently ~15 % slower

@@ -8,7 +8,7 @@
 #include <cstdint>
 #include <vector>
 
-#include "dem/batch_lane.hpp"
+#include "dem/threaded_cpu/batch_lane.hpp"
 #include "dem/contact/law.hpp"
 #include "dem/particles.hpp"
 #include "dem/wall.hpp"

@@ -5,7 +5,7 @@
 #include <cstdint>
 #include <vector>
 
-#include "dem/batch_lane.hpp"
+#include "dem/threaded_cpu/batch_lane.hpp"
 #include "dem/contact/law.hpp"
 #include "dem/domain.hpp"
 #include "dem/pair_histories.hpp"

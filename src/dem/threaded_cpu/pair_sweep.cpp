@@ -1,9 +1,9 @@
-#include "dem/pair_sweep.hpp"
+#include "dem/threaded_cpu/pair_sweep.hpp"
 
 #include <algorithm>
 #include <cmath>
 
-#include "dem/batch_lane.hpp"
+#include "dem/threaded_cpu/batch_lane.hpp"
 #include "dem/contact/law_dispatch.hpp"
 #include "dem/pair_list.hpp"
 

@@ -1,4 +1,4 @@
-#include "dem/contact_sweep.hpp"
+#include "dem/threaded_cpu/threaded_cpu_backend.hpp"
 
 #include <omp.h>
 
@@ -6,7 +6,6 @@
 
 #include "dem/integrator.hpp"
 #include "dem/pair_list.hpp"
-#include "dem/simulation.hpp"
 #include "dem/thread_block.hpp"
 
 namespace trapdem {
@@ -67,7 +66,7 @@ class BlockSweep {
     wall_batch_.count = 0;
     next_near_wall_ = std::lower_bound(in_.near_walls, in_.near_walls_end, std::uint32_t(begin));
     // The particles below the highest partner of the earlier blocks' owners get a share after
-    // the sweep: they are kicked then (Simulation::contacts).
+    // the sweep: they are kicked then (compute_forces).
     next_kick_ = in_.kick ? std::min(end, std::max<std::size_t>(begin, in_.partner_reach[begin])) : end;
   }
 
@@ -157,98 +156,97 @@ class BlockSweep {
 // 80k particles), and run through the law in batches of their own. Each thread sums its own wall
 // loads; the threads' sums are added in thread order. With `kick`, each particle also gets the
 // second half kick of the step as soon as its force is complete.
-void Simulation::contacts(bool kick) {
-  const std::size_t n = p_.size();
+ForcePassResult ThreadedCpuBackend::compute_forces(EngineState& state, const ForcePass& pass) {
+  Particles& p = state.particles;
+  ContactLists& lists = state.lists;
+  const std::size_t n = p.size();
   const int threads = omp_get_max_threads();
-  ContactSweep& s = *sweep_;
-  s.deferred.resize(std::size_t(threads));
-  s.batches.resize(std::size_t(threads));
-  s.wall_batches.resize(std::size_t(threads));
-  const std::size_t n_walls = walls_.size();
-  s.wall_loads.assign(std::size_t(threads) * n_walls * 2, Vec3{});  // force, torque per thread and wall
-  const SecondHalfKick second_half_kick = this->second_half_kick();
-  const SweepInputs in{p_,
-                       settings_.domain,
-                       settings_.domain.any_periodic(),
-                       dt_,
-                       {pairs_.first.data(), pairs_.partner.data(), pair_contact_.data(),
-                        static_cast<std::uint32_t>(pairs_.size())},
-                       contacts_.read(),
-                       contacts_next_.write(),
-                       pairs_.first.data(),
-                       pair_batch_law(s.particle_choices),
-                       s.particle_params,
-                       walls_,
-                       wall_list_,
-                       s.wall_laws,
-                       particles_near_walls_.data(),
-                       particles_near_walls_.data() + particles_near_walls_.size(),
-                       partner_reach_.data(),
-                       second_half_kick,
+  deferred_.resize(std::size_t(threads));
+  batches_.resize(std::size_t(threads));
+  wall_batches_.resize(std::size_t(threads));
+  const std::size_t n_walls = state.walls.size();
+  wall_loads_.assign(std::size_t(threads) * n_walls * 2, Vec3{});  // force, torque per thread and wall
+  const bool kick = pass.second_half_kick != nullptr;
+  const SecondHalfKick no_kick{};
+  const SweepInputs in{p,
+                       pass.domain,
+                       pass.domain.any_periodic(),
+                       pass.dt,
+                       {lists.pairs.first.data(), lists.pairs.partner.data(), lists.pair_contact.data(),
+                        static_cast<std::uint32_t>(lists.pairs.size())},
+                       lists.contacts.read(),
+                       lists.contacts_next.write(),
+                       lists.pairs.first.data(),
+                       pair_batch_law(particle_choices_),
+                       particle_params_,
+                       state.walls,
+                       lists.walls,
+                       wall_laws_,
+                       lists.particles_near_walls.data(),
+                       lists.particles_near_walls.data() + lists.particles_near_walls.size(),
+                       lists.partner_reach.data(),
+                       kick ? *pass.second_half_kick : no_kick,
                        kick};
   double max_overlap = 0.0;
   int any_bad = 0;
 #pragma omp parallel reduction(max : max_overlap) reduction(| : any_bad)
   {
     const int me = omp_get_thread_num();
-    BlockSweep sweep(in, thread_block(n, me, omp_get_num_threads()), s.batches[std::size_t(me)],
-                     s.wall_batches[std::size_t(me)], s.deferred[std::size_t(me)],
-                     s.wall_loads.data() + std::size_t(me) * n_walls * 2);
+    BlockSweep sweep(in, thread_block(n, me, omp_get_num_threads()), batches_[std::size_t(me)],
+                     wall_batches_[std::size_t(me)], deferred_[std::size_t(me)],
+                     wall_loads_.data() + std::size_t(me) * n_walls * 2);
     any_bad |= sweep.run(max_overlap);
   }
-  add_deferred_shares();
-  if (kick) any_bad |= kick_after_deferred_shares(second_half_kick, threads);
-  bad_particle_ = any_bad ? first_non_finite_particle() : -1;
-  contacts_.swap(contacts_next_);
-  max_overlap_seen_ = max_overlap;
-  sum_wall_loads(threads);
+  add_deferred_shares(p);
+  if (kick) any_bad |= kick_after_deferred_shares(state, *pass.second_half_kick, threads);
+  lists.contacts.swap(lists.contacts_next);
+  sum_wall_loads(state.walls, threads);
+  return {max_overlap, any_bad != 0};
 }
 
-SecondHalfKick Simulation::second_half_kick() {
-  return {p_.velocity.data(),    p_.angular_velocity.data(), p_.force.data(), p_.torque.data(),
-          p_.inv_mass.data(),    p_.inv_inertia.data(),      gravity(),       0.5 * dt_,
-          !settings_.freeze_rotation, spin_retention(law_, dt_)};
+void ThreadedCpuBackend::set_particle_law(const LawParams& params, const LawChoices& choices) {
+  particle_params_ = params;
+  particle_choices_ = choices;
 }
+
+void ThreadedCpuBackend::add_wall_law(const LawParams& params, const LawChoices& choices) { wall_laws_.add(params, choices); }
 
 // The shares for partners in later threads' blocks, in thread order.
-void Simulation::add_deferred_shares() {
-  for (const auto& shares : sweep_->deferred) {
+void ThreadedCpuBackend::add_deferred_shares(Particles& p) const {
+  for (const auto& shares : deferred_) {
     for (const PartnerShare& s : shares) {
-      p_.force[s.particle] += s.force;
-      p_.torque[s.particle] += s.torque;
+      p.force[s.particle] += s.force;
+      p.torque[s.particle] += s.torque;
     }
   }
 }
 
 // The particles that received a share after the sweep, block by block: each block's particles
-// below the highest partner of the earlier blocks' owners (partner_reach_).
-int Simulation::kick_after_deferred_shares(const SecondHalfKick& second_half_kick, int threads) {
+// below the highest partner of the earlier blocks' owners (ContactLists::partner_reach).
+int ThreadedCpuBackend::kick_after_deferred_shares(const EngineState& state, const SecondHalfKick& second_half_kick,
+                                                   int threads) const {
   int any_bad = 0;
   for (int th = 0; th < threads; ++th) {
-    const auto [begin, end] = thread_block(p_.size(), th, threads);
-    const std::size_t reach = std::min(end, std::max<std::size_t>(begin, partner_reach_[begin]));
+    const auto [begin, end] = thread_block(state.particles.size(), th, threads);
+    const std::size_t reach = std::min(end, std::max<std::size_t>(begin, state.lists.partner_reach[begin]));
     for (std::size_t p = begin; p < reach; ++p) any_bad |= second_half_kick(p);
   }
   return any_bad;
 }
 
-std::int64_t Simulation::first_non_finite_particle() const {
-  for (std::size_t i = 0; i < owned_count(); ++i)
-    if (!is_finite(p_.velocity[i]) || !is_finite(p_.angular_velocity[i])) return std::int64_t(i);
-  return -1;
-}
-
 // The walls' loads: each thread's sums, in thread order.
-void Simulation::sum_wall_loads(int threads) {
-  const std::size_t n_walls = walls_.size();
+void ThreadedCpuBackend::sum_wall_loads(std::vector<Wall>& walls, int threads) const {
+  const std::size_t n_walls = walls.size();
   for (std::size_t k = 0; k < n_walls; ++k) {
-    walls_[k].force = Vec3{};
-    walls_[k].torque = Vec3{};
+    walls[k].force = Vec3{};
+    walls[k].torque = Vec3{};
     for (int th = 0; th < threads; ++th) {
-      walls_[k].force += sweep_->wall_loads[(std::size_t(th) * n_walls + k) * 2];
-      walls_[k].torque += sweep_->wall_loads[(std::size_t(th) * n_walls + k) * 2 + 1];
+      walls[k].force += wall_loads_[(std::size_t(th) * n_walls + k) * 2];
+      walls[k].torque += wall_loads_[(std::size_t(th) * n_walls + k) * 2 + 1];
     }
   }
 }
+
+std::unique_ptr<ForceBackend> make_threaded_cpu_backend() { return std::make_unique<ThreadedCpuBackend>(); }
 
 }  // namespace trapdem

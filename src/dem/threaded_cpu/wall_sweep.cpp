@@ -1,8 +1,8 @@
-#include "dem/wall_sweep.hpp"
+#include "dem/threaded_cpu/wall_sweep.hpp"
 
 #include <algorithm>
 
-#include "dem/batch_lane.hpp"
+#include "dem/threaded_cpu/batch_lane.hpp"
 #include "dem/contact/law_dispatch.hpp"
 
 namespace trapdem {
