@@ -11,11 +11,6 @@
 
 namespace trapdem {
 
-bool ContactLaw::uses_reference_time_step() const {
-  return tangential_model == TangentialModel::blaze_viscous || tangential_model == TangentialModel::blaze_tresca ||
-         (rolling_model == RollingModel::angular_damping && rolling_friction > 0.0);
-}
-
 double ContactLaw::damping_restitution() const {
   // Blaze-DEM V_02_2015, src/Input/KSimulationData.cpp (every Set_SpringConstants* function):
   // `if (COR >= 0.30 && COR <= 0.90) COR -= 0.038080;` before c_n is computed from it.
@@ -32,42 +27,94 @@ double ContactLaw::damping_ratio() const {
 }
 
 namespace {
-[[noreturn]] void fail(const std::string& where, const char* key, double value, const char* expected) {
-  throw InputError(fmt::format("{}.{} = {}: expected {}", where, key, value, expected));
+
+// What a parameter's bounds accept, in words: "a positive stiffness in (0, 1e+14] N/m".
+std::string expected(const LawParameter& p) {
+  return fmt::format("{} in {}{:g}, {:g}{}{}", p.meaning, p.bounds.lowest_included ? "[" : "(", p.bounds.lowest,
+                     p.bounds.highest, p.bounds.highest_included ? "]" : ")", p.unit.empty() ? "" : " ", p.unit);
 }
+
+[[noreturn]] void fail(const std::string& where, const LawParameter& p, double value) {
+  throw InputError(fmt::format("{}.{} = {}: expected {}", where, p.key, value, expected(p)));
+}
+
+template <class List, class Choice>
+void append_model_parameters(Choice chosen, std::vector<LawParameter>& out) {
+  List::visit(chosen, [&](auto model) {
+    for (const LawParameter& p : decltype(model)::parameters) out.push_back(p);
+    return 0;
+  });
+}
+
 }  // namespace
 
+std::vector<LawParameter> chosen_parameters(const ContactLaw& law) {
+  std::vector<LawParameter> out;
+  append_model_parameters<NormalModels>(law.normal_model, out);
+  for (const LawParameter& p : RestitutionDamping::parameters) out.push_back(p);
+  append_model_parameters<TangentialModels>(law.tangential_model, out);
+  append_model_parameters<RollingModels>(law.rolling_model, out);
+  return out;
+}
+
+std::vector<LawParameter> active_parameters(const ContactLaw& law) {
+  std::vector<LawParameter> out;
+  append_model_parameters<NormalModels>(law.normal_model, out);
+  for (const LawParameter& p : RestitutionDamping::parameters) out.push_back(p);
+  append_model_parameters<TangentialModels>(law.tangential_model, out);
+  if (law.rolling_friction != 0.0) append_model_parameters<RollingModels>(law.rolling_model, out);  // else off
+  return out;
+}
+
+std::vector<LawParameter> declared_parameters() {
+  std::vector<LawParameter> out;
+  auto add = [&](const LawParameter& p) {
+    for (const LawParameter& q : out)
+      if (q.key == p.key) return;
+    out.push_back(p);
+  };
+  auto add_model = [&](auto model) {
+    for (const LawParameter& p : decltype(model)::parameters) add(p);
+  };
+  add(ConstantTorqueRolling::parameters[0]);  // rolling_friction first: whether rolling is on depends on it
+  NormalModels::for_each(add_model);
+  for (const LawParameter& p : RestitutionDamping::parameters) add(p);
+  TangentialModels::for_each(add_model);
+  RollingModels::for_each(add_model);
+  return out;
+}
+
+std::string readers_of(std::string_view key) {
+  std::vector<std::string> readers;
+  auto of_axis = [&](auto list, const char* axis) {
+    std::vector<std::string> names;
+    decltype(list)::for_each([&](auto model) {
+      using Model = decltype(model);
+      for (const LawParameter& p : Model::parameters)
+        if (p.key == key) names.push_back(fmt::format("\"{}\"", to_string(Model::model)));
+    });
+    if (names.empty()) return;
+    std::string text = fmt::format("{} = ", axis);
+    for (std::size_t k = 0; k < names.size(); ++k) text += (k == 0 ? "" : " or ") + names[k];
+    if (std::string_view(axis) == "rolling_model" && key != "rolling_friction") text += " with rolling_friction > 0";
+    readers.push_back(std::move(text));
+  };
+  of_axis(NormalModels{}, "normal_model");
+  of_axis(TangentialModels{}, "tangential_model");
+  of_axis(RollingModels{}, "rolling_model");
+  std::string text;
+  for (std::size_t k = 0; k < readers.size(); ++k) text += (k == 0 ? "" : ", or ") + readers[k];
+  return text.empty() ? "every law" : text;
+}
+
 void ContactLaw::validate(const std::string& where) const {
-  if (normal_model == NormalModel::linear) {
-    if (!(normal_stiffness > 0.0) || !std::isfinite(normal_stiffness)) fail(where, "normal_stiffness", normal_stiffness, "a positive stiffness in N/m");
-    if (!(tangential_stiffness >= 0.0) || !std::isfinite(tangential_stiffness)) fail(where, "tangential_stiffness", tangential_stiffness, "a stiffness >= 0 in N/m");
-  } else {
-    validate_material(where);
-  }
-  if (!(restitution > 0.0 && restitution <= 1.0)) fail(where, "restitution", restitution, "a coefficient of restitution in (0, 1]");
-  if (!(static_friction >= 0.0)) fail(where, "static_friction", static_friction, "a friction coefficient >= 0");
-  if (!(kinetic_friction >= 0.0)) fail(where, "kinetic_friction", kinetic_friction, "a friction coefficient >= 0");
-  if (!(rolling_friction >= 0.0)) fail(where, "rolling_friction", rolling_friction, "a rolling friction coefficient >= 0");
-  if (!(rolling_damping >= 0.0)) fail(where, "rolling_damping", rolling_damping, "a damping ratio >= 0");
-  if (rolling_model == RollingModel::angular_damping && !(rolling_friction < 1.0))
-    fail(where, "rolling_friction", rolling_friction,
-         "a factor in [0, 1) with rolling_model = \"angular_damping\" (omega is multiplied by 1 - mu_r per reference step)");
-  if (uses_reference_time_step()) {
-    if (!(reference_time_step > 0.0) || !std::isfinite(reference_time_step))
-      fail(where, "reference_time_step", reference_time_step,
-           "a positive time step in s (Blaze-DEM's dt: tangential_model = \"blaze_viscous\" or \"blaze_tresca\" and "
-           "rolling_model = \"angular_damping\" take their scales from it)");
-    if (!(blaze_velocity_scale > 0.0) || !std::isfinite(blaze_velocity_scale))
-      fail(where, "blaze_velocity_scale", blaze_velocity_scale, "a positive speed in m/s");
-    if (!(blaze_rest_speed > 0.0) || !std::isfinite(blaze_rest_speed))
-      fail(where, "blaze_rest_speed", blaze_rest_speed, "a positive speed in m/s");
-  }
+  for (const LawParameter& p : active_parameters(*this))
+    if (!p.bounds.contain(this->*p.field)) fail(where, p, this->*p.field);
 }
 
 void ContactLaw::validate_material(const std::string& where) const {
-  if (!(youngs_modulus > 0.0) || !std::isfinite(youngs_modulus))
-    fail(where, "youngs_modulus", youngs_modulus, "a positive Young's modulus in Pa (the Hertz normal model needs it)");
-  if (!(poisson_ratio >= 0.0 && poisson_ratio < 0.5)) fail(where, "poisson_ratio", poisson_ratio, "a Poisson's ratio in [0, 0.5)");
+  for (const LawParameter& p : NormalHertz::parameters)
+    if (!p.bounds.contain(this->*p.field)) fail(where, p, this->*p.field);
 }
 
 template <class E>

@@ -6,6 +6,7 @@
 #include <vector>
 
 #include "dem/contact/choices.hpp"
+#include "dem/contact/law_parameter.hpp"
 
 namespace trapdem {
 
@@ -31,8 +32,6 @@ struct ContactLaw {
   double blaze_velocity_scale = 5.0e-4;   // m/s, u0 (Blaze's literal 0.05 cm/s)
   double blaze_rest_speed = 0.01;         // m/s, V when the centres' relative speed is 0 (Blaze's 1 cm/s)
 
-  // Whether a Blaze-DEM model is chosen (the reference keys are read and required then).
-  bool uses_reference_time_step() const;
   // The restitution the dashpots are set from: e, or Blaze-DEM's e - 0.03808 for 0.3 <= e <= 0.9.
   double damping_restitution() const;
 
@@ -44,6 +43,20 @@ struct ContactLaw {
   // The material's Young's modulus and Poisson's ratio (a Hertz contact reads both bodies').
   void validate_material(const std::string& where) const;
 };
+
+// The parameters the law's chosen models read (contact/law_parameter.hpp), in the order normal,
+// damping, tangential, rolling; the rolling model's only when mu_r != 0 (a rolling model with
+// mu_r = 0 is off). What validate checks and the configuration reader requires.
+std::vector<LawParameter> active_parameters(const ContactLaw& law);
+// The parameters of the models the law names, its rolling model's whatever mu_r (with the bounds
+// that model gives them: rolling_friction below 1 under angular_damping).
+std::vector<LawParameter> chosen_parameters(const ContactLaw& law);
+// Every model's parameters, each key once, in the model lists' order with rolling_friction first
+// (whether a rolling model is on depends on it): what the configuration reader reads.
+std::vector<LawParameter> declared_parameters();
+// The choices under which a key is read, for messages: normal_model = "linear"; tangential_model =
+// "blaze_viscous" or "blaze_tresca", or rolling_model = "angular_damping" with rolling_friction > 0.
+std::string readers_of(std::string_view key);
 
 // The law's choices as the compiler sees them (rolling none when mu_r = 0: every rolling model
 // scales with mu_r, angular_damping's factor 1 - mu_r included; canonical).

@@ -23,12 +23,6 @@ constexpr double kMaxLength = 10.0;            // m: box, trapdoor, travel, heig
 constexpr double kMaxDiameter = 1.0;           // m
 constexpr double kMaxDensity = 1e5;            // kg/m^3: the densest solid (osmium) is 22 590
 constexpr double kMaxRate = 10.0;              // m/s: a trapdoor lowered faster is no longer quasi-static
-constexpr double kMaxStiffness = 1e14;         // N/m: 2000x the paper's k_n = 4.5e10 N/m
-constexpr double kMaxModulus = 1e13;           // Pa: diamond has E = 1.2e12 Pa
-constexpr double kMaxFriction = 10.0;          // mu_s, mu_k, mu_r: measured ones are below 2
-constexpr double kMaxRollingDamping = 10.0;    // eta_r: usual 0.3
-constexpr double kMaxReferenceTimeStep = 1e-2; // s: a DEM time step; Blaze-DEM's are ~1e-8 to 1e-6
-constexpr double kMaxBlazeSpeed = 10.0;        // m/s: Blaze-DEM's u0 is 5e-4, its rest speed 0.01
 constexpr std::int64_t kMaxParticles = 100'000'000;  // memory: about 0.5 kB per particle with its contacts
 constexpr double kMaxTime = 1e4;               // s of simulated time in one stage
 constexpr double kMaxGLevel = 1000.0;          // g: centrifuges reach a few hundred g
@@ -47,63 +41,59 @@ constexpr double kMaxSpinRate = 150.0;         // rad/s (1430 rpm): the fastest 
 // youngs_modulus (required unless inherited) and poisson_ratio. A stiffness key under "hertz" is
 // an error (it would be ignored); youngs_modulus and poisson_ratio describe the body's material
 // and are accepted with either (a Hertz wall reads the particles' material from [contact]).
+// The law's choices from the table, then every model's parameters as the models declare them
+// (contact/law_parameter.hpp): the chosen models' with their bounds, required when the base law has
+// no valid value (a Young's modulus for Hertz, Blaze-DEM's time step); a material's (E, nu) always;
+// another model's key refused when it is exclusive to that model (its value would be ignored), else
+// read with its bounds and kept (a preset's friction under a law that does not use it).
 ContactLaw read_contact_law(Config table, const ContactLaw& base) {
-  ContactLaw law;
+  ContactLaw law = base;
   law.normal_model = parse_choice<NormalModel>(
       table.get_choice("normal_model", to_string(base.normal_model), choice_names<NormalModel>()));
-  const bool hertz = law.normal_model == NormalModel::hertz;
-  if (hertz) {
-    for (const char* key : {"normal_stiffness", "tangential_stiffness"})
-      if (table.has(key))
-        table.fail(key, "no stiffness with normal_model = \"hertz\" (its stiffness follows from youngs_modulus "
-                               "and poisson_ratio); remove the key or set normal_model = \"linear\"");
-    law.normal_stiffness = base.normal_stiffness;
-    law.tangential_stiffness = base.tangential_stiffness;
-  } else {
-    law.normal_stiffness = table.get_double("normal_stiffness", base.normal_stiffness, "N/m", Range::open_closed(0.0, kMaxStiffness));
-    const double kt_default = table.has("normal_stiffness") ? 0.5 * law.normal_stiffness : base.tangential_stiffness;
-    law.tangential_stiffness = table.get_double("tangential_stiffness", kt_default, "N/m", Range::closed(0.0, kMaxStiffness));
-  }
-  // Read only when given (or required): the unset default (0) is no valid modulus to write back.
-  law.youngs_modulus = hertz && !(base.youngs_modulus > 0.0) ? table.require_double("youngs_modulus", "Pa", Range::open_closed(0.0, kMaxModulus))
-                       : table.has("youngs_modulus")        ? table.get_double("youngs_modulus", 0.0, "Pa", Range::open_closed(0.0, kMaxModulus))
-                                                             : base.youngs_modulus;
-  law.poisson_ratio = table.get_double("poisson_ratio", base.poisson_ratio, "", Range{0.0, 0.5, true, false});
-  law.restitution = table.get_double("restitution", base.restitution, "", Range::unit_open_closed());
   law.damping_model = parse_choice<DampingModel>(
       table.get_choice("damping_model", to_string(base.damping_model), choice_names<DampingModel>()));
   law.tangential_model = parse_choice<TangentialModel>(
       table.get_choice("tangential_model", to_string(base.tangential_model), choice_names<TangentialModel>()));
-  law.static_friction = table.get_double("static_friction", base.static_friction, "", Range::closed(0.0, kMaxFriction));
-  const double mu_k_default = table.has("static_friction") ? law.static_friction : base.kinetic_friction;
-  law.kinetic_friction = table.get_double("kinetic_friction", mu_k_default, "", Range::closed(0.0, kMaxFriction));
-  law.rolling_friction = table.get_double("rolling_friction", base.rolling_friction, "", Range::closed(0.0, kMaxFriction));
   law.rolling_model = parse_choice<RollingModel>(
       table.get_choice("rolling_model", to_string(base.rolling_model), choice_names<RollingModel>()));
   law.lever_arm = parse_choice<RollingLeverArm>(
       table.get_choice("lever_arm", to_string(base.lever_arm), choice_names<RollingLeverArm>()));
   law.rolling_stiffness = parse_choice<RollingStiffness>(
       table.get_choice("rolling_stiffness", to_string(base.rolling_stiffness), choice_names<RollingStiffness>()));
-  law.rolling_damping = table.get_double("rolling_damping", base.rolling_damping, "", Range::closed(0.0, kMaxRollingDamping));
-  // Blaze-DEM's reference keys: read where a model uses them, an error elsewhere (they would be ignored).
-  if (law.uses_reference_time_step()) {
-    law.reference_time_step = base.reference_time_step > 0.0
-                                  ? table.get_double("reference_time_step", base.reference_time_step, "s", Range::open_closed(0.0, kMaxReferenceTimeStep))
-                                  : table.require_double("reference_time_step", "s", Range::open_closed(0.0, kMaxReferenceTimeStep));
-    law.blaze_velocity_scale = table.get_double("blaze_velocity_scale", base.blaze_velocity_scale, "m/s", Range::open_closed(0.0, kMaxBlazeSpeed));
-    law.blaze_rest_speed = table.get_double("blaze_rest_speed", base.blaze_rest_speed, "m/s", Range::open_closed(0.0, kMaxBlazeSpeed));
-  } else {
-    for (const char* key : {"reference_time_step", "blaze_velocity_scale", "blaze_rest_speed"})
-      if (table.has(key))
-        table.fail(key, "no Blaze-DEM reference with this law (read only with tangential_model = \"blaze_viscous\" or "
-                        "\"blaze_tresca\", or rolling_model = \"angular_damping\" and rolling_friction > 0); remove the key");
-    law.reference_time_step = base.reference_time_step;
-    law.blaze_velocity_scale = base.blaze_velocity_scale;
-    law.blaze_rest_speed = base.blaze_rest_speed;
+
+  const std::vector<LawParameter> declared = declared_parameters();
+  const std::vector<LawParameter> chosen = chosen_parameters(law);
+  auto find = [](const std::vector<LawParameter>& list, std::string_view key) -> const LawParameter* {
+    for (const LawParameter& p : list)
+      if (p.key == key) return &p;
+    return nullptr;
+  };
+  for (const LawParameter& any : declared) {
+    const LawParameter* mine = find(chosen, any.key);
+    const LawParameter& p = mine ? *mine : any;
+    // Active: read by a model that is on (rolling_friction, read first, says whether rolling is).
+    const bool active = find(active_parameters(law), p.key) != nullptr;
+    if (!active && !p.material && p.exclusive) {
+      if (table.has(p.key))
+        table.fail(p.key, fmt::format("no {} with this law (read only with {}); remove the key", p.key, readers_of(p.key)));
+      continue;
+    }
+    // Read within the widest bounds any model gives the key; a chosen model's narrower ones are its
+    // rule, checked after (so that a value past them still says whether a model is on).
+    const Range range{any.bounds.lowest, any.bounds.highest, any.bounds.lowest_included, any.bounds.highest_included};
+    double fallback = base.*p.field;
+    if (!p.follows.empty() && table.has(p.follows)) fallback = p.follow_factor * law.*find(declared, p.follows)->field;
+    // Every key read is written to resolved.toml with its value; an unset one with no valid value
+    // (a Young's modulus of 0 under the linear law) is not read, so none is written back.
+    if (active && !table.has(p.key) && !p.bounds.contain(fallback))
+      law.*p.field = table.require_double(p.key, p.unit, range);
+    else if (table.has(p.key) || p.bounds.contain(fallback))
+      law.*p.field = table.get_double(p.key, fallback, p.unit, range);
+    else
+      law.*p.field = fallback;
+    if (table.has(p.key) && any.bounds.contain(law.*p.field) && !p.bounds.contain(law.*p.field))
+      table.fail(p.key, p.meaning);
   }
-  if (law.rolling_model == RollingModel::angular_damping && !(law.rolling_friction < 1.0))
-    table.fail("rolling_friction", "a factor in [0, 1) with rolling_model = \"angular_damping\" (omega is multiplied "
-                                   "by 1 - mu_r per reference step)");
   return law;
 }
 

@@ -241,7 +241,9 @@ const std::vector<BadConfig>& cases() {
        "reference_time_step = 1e-7\n"
        "[pluviation]\n"
        "count = 100\n",
-       2, "contact.reference_time_step", "no Blaze-DEM reference with this law"},
+       2, "contact.reference_time_step",
+       "no reference_time_step with this law (read only with tangential_model = \"blaze_viscous\" or \"blaze_tresca\", or "
+       "rolling_model = \"angular_damping\" with rolling_friction > 0)"},
       {"AngularDampingOfOneOrMore",
        "[contact]\n"
        "rolling_model = \"angular_damping\"\n"

@@ -28,6 +28,12 @@ struct ModelList {
   template <Enum m>
   using Model = std::tuple_element_t<static_cast<std::size_t>(m), std::tuple<Models...>>;
 
+  // f(Model{}) for every model, in the list's order.
+  template <class F>
+  static constexpr void for_each(F&& f) {
+    (f(Models{}), ...);
+  }
+
   // f(Model{}) for the model of value m (a run-time choice: parameters, time step, inertias).
   template <class F>
   static constexpr auto visit(Enum m, F&& f) {

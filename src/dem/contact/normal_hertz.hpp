@@ -12,11 +12,13 @@
 // c_n = 2 sqrt(5/6) beta sqrt(S_n m*), c_t = 2 sqrt(5/6) beta sqrt(S_t m*) (damping.hpp).
 // A particle-wall contact combines the particle's material (the particle law's E, nu) with the
 // wall's (the wall law's); a particle pair has the particle material on both sides.
+#include <array>
 #include <cmath>
 #include <numbers>
 
 #include "dem/contact/choices.hpp"
 #include "dem/contact/normal_response.hpp"
+#include "dem/contact/law_parameter.hpp"
 #include "dem/contact_law.hpp"
 
 namespace trapdem {
@@ -33,6 +35,13 @@ struct NormalHertz {
   };
 
   // E* and G* of the contact under `law` (the wall's for a wall law) with the particle material.
+  // The material's E and nu: read with any normal model (another law's Hertz contact with this
+  // body reads them), required with this one.
+  static constexpr std::array<LawParameter, 2> parameters{{
+      {"youngs_modulus", &ContactLaw::youngs_modulus, "Pa", open_closed(0.0, kMaxLawModulus),
+       "a positive Young's modulus (the Hertz normal model needs it)", {}, 1.0, true},
+      {"poisson_ratio", &ContactLaw::poisson_ratio, "", closed_open(0.0, 0.5), "a Poisson's ratio", {}, 1.0, true},
+  }};
   static Params params(const ContactLaw& law, const ContactLaw& particle_law) {
     const double e1 = particle_law.youngs_modulus, nu1 = particle_law.poisson_ratio;
     const double e2 = law.youngs_modulus, nu2 = law.poisson_ratio;

@@ -1,10 +1,12 @@
 #pragma once
 // Linear normal spring (the seed paper's eq. 1, F_n = k_n delta) with a constant tangential
 // stiffness k_t (eq. 2).
+#include <array>
 #include <cmath>
 
 #include "dem/contact/choices.hpp"
 #include "dem/contact/normal_response.hpp"
+#include "dem/contact/law_parameter.hpp"
 #include "dem/contact_law.hpp"
 
 namespace trapdem {
@@ -20,6 +22,13 @@ struct NormalLinear {
     double sqrt_kt_over_kn = 0.0;  // c_t = c_n sqrt(k_t / k_n)
   };
 
+  // The seed's eqs. 1-2: k_n, and k_t (k_n / 2 when only k_n is given, as the seed's Table 2).
+  static constexpr std::array<LawParameter, 2> parameters{{
+      {"normal_stiffness", &ContactLaw::normal_stiffness, "N/m", open_closed(0.0, kMaxLawStiffness), "a positive stiffness",
+       {}, 1.0, false, true},
+      {"tangential_stiffness", &ContactLaw::tangential_stiffness, "N/m", closed(0.0, kMaxLawStiffness), "a stiffness >= 0",
+       "normal_stiffness", 0.5, false, true},
+  }};
   static Params params(const ContactLaw& law, const ContactLaw& /*particle_law*/) {
     return {law.normal_stiffness, law.tangential_stiffness, std::sqrt(law.tangential_stiffness / law.normal_stiffness)};
   }

@@ -8,11 +8,13 @@
 // Blaze applies the factor once per step of its own time step dt_ref; trapdem applies it at the
 // same rate in time, (1 - mu_r)^(dt / dt_ref) per step of dt, so that a run with another step is
 // the same material (tests/dem/blaze_law_test.cpp). The contact itself carries no rolling torque.
+#include <array>
 #include <cmath>
 
 #include "dem/contact/choices.hpp"
 #include "dem/contact/contact_history.hpp"
 #include "dem/contact/sub_model_inputs.hpp"
+#include "dem/contact/law_parameter.hpp"
 #include "dem/contact_law.hpp"
 
 namespace trapdem {
@@ -25,6 +27,15 @@ struct AngularDampingRolling {
   static constexpr bool needs_spin_inertia = false;
   static constexpr bool needs_rolling_inertia(const LawChoices&) { return false; }
   struct Params {};
+  // mu_r, first (omega x (1 - mu_r) per reference step, so below 1; mu_r = 0 is off), then
+  // Blaze-DEM's time step.
+  static constexpr std::array<LawParameter, 2> parameters{{
+      {"rolling_friction", &ContactLaw::rolling_friction, "", closed_open(0.0, 1.0),
+       "a factor in [0, 1) with rolling_model = \"angular_damping\" (omega is multiplied by 1 - mu_r per reference "
+       "step)"},
+      {"reference_time_step", &ContactLaw::reference_time_step, "s", open_closed(0.0, kMaxReferenceTimeStep),
+       "a positive time step (Blaze-DEM's dt)", {}, 1.0, false, true},
+  }};
   static Params params(const ContactLaw&) { return {}; }
 
   // The factor on every particle's angular velocity per engine step of dt (s): the rolling

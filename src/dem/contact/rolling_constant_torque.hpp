@@ -1,12 +1,14 @@
 #pragma once
 // Rolling resistance, Ai et al. (2011) type A: a constant torque M = mu_r R |F_n| against the
 // relative rolling (the seed paper's eq. 5).
+#include <array>
 #include <algorithm>
 #include <cmath>
 
 #include "dem/contact/choices.hpp"
 #include "dem/contact/contact_history.hpp"
 #include "dem/contact/sub_model_inputs.hpp"
+#include "dem/contact/law_parameter.hpp"
 #include "dem/contact_law.hpp"
 #include "dem/vec3.hpp"
 
@@ -20,6 +22,11 @@ struct ConstantTorqueRolling {
   static constexpr bool needs_spin_inertia = true;
   static constexpr bool needs_rolling_inertia(const LawChoices&) { return false; }
   struct Params {};
+  // mu_r, first: a rolling model with mu_r = 0 is off (law_choices).
+  static constexpr std::array<LawParameter, 1> parameters{{
+      {"rolling_friction", &ContactLaw::rolling_friction, "", closed(0.0, kMaxLawFriction),
+       "a rolling friction coefficient >= 0"},
+  }};
   static Params params(const ContactLaw&) { return {}; }
 
   // The torque on body i: the limit mu_r R |F_n| against the relative rolling, bounded by what

@@ -1,11 +1,13 @@
 #pragma once
 // Rolling resistance, Ai et al. (2011) type C (elastic-plastic spring-dashpot, EPSD), eqs. 14-18:
 // an incremental spring torque capped at mu_r R |F_n|, with a dashpot while it is below the cap.
+#include <array>
 #include <cmath>
 
 #include "dem/contact/choices.hpp"
 #include "dem/contact/contact_history.hpp"
 #include "dem/contact/sub_model_inputs.hpp"
+#include "dem/contact/law_parameter.hpp"
 #include "dem/contact_law.hpp"
 #include "dem/vec3.hpp"
 
@@ -21,6 +23,12 @@ struct EpsdRolling {
   struct Params {
     double eta_r = 0.0;  // the dashpot's damping ratio (Ai et al. 2011 use 0.3)
   };
+  // mu_r, first: a rolling model with mu_r = 0 is off (law_choices); then the dashpot's eta_r.
+  static constexpr std::array<LawParameter, 2> parameters{{
+      {"rolling_friction", &ContactLaw::rolling_friction, "", closed(0.0, kMaxLawFriction),
+       "a rolling friction coefficient >= 0"},
+      {"rolling_damping", &ContactLaw::rolling_damping, "", closed(0.0, kMaxRollingDamping), "a damping ratio >= 0"},
+  }};
   static Params params(const ContactLaw& law) { return {law.rolling_damping}; }
 
   // The torque on body i; updates the history's rolling spring. The stiffness k_r and whether the

@@ -1,8 +1,11 @@
 #pragma once
 // No rolling resistance: the contact carries no torque beyond r x F_t.
+#include <array>
+
 #include "dem/contact/choices.hpp"
 #include "dem/contact/contact_history.hpp"
 #include "dem/contact/sub_model_inputs.hpp"
+#include "dem/contact/law_parameter.hpp"
 #include "dem/contact_law.hpp"
 
 namespace trapdem {
@@ -15,6 +18,7 @@ struct NoRolling {
   static constexpr bool needs_spin_inertia = false;
   static constexpr bool needs_rolling_inertia(const LawChoices&) { return false; }
   struct Params {};
+  static constexpr std::array<LawParameter, 0> parameters{};
   static Params params(const ContactLaw&) { return {}; }
 };
 

@@ -14,12 +14,14 @@
 // makes that jitter grow with dt / dt_ref (docs/config.md gives the measurement). This model keeps
 // the strength and drops the jitter; what it leaves out is the factor |v_t| / V < 1 of a contact
 // that slides while it also closes or opens.
+#include <array>
 #include <cmath>
 
 #include "dem/contact/choices.hpp"
 #include "dem/contact/contact_history.hpp"
 #include "dem/contact/sub_model_inputs.hpp"
 #include "dem/contact/tangential_spring.hpp"
+#include "dem/contact/law_parameter.hpp"
 #include "dem/contact_law.hpp"
 #include "dem/vec3.hpp"
 
@@ -32,6 +34,18 @@ struct BlazeTrescaTangential {
   struct Params {
     double strength_rate = 0.0;  // m/s^2, mu_k u0 / dt_ref: S = strength_rate x mean mass
   };
+  // mu_k (Blaze's strength factor) and Blaze-DEM's scales (the rest speed is read as with the
+  // viscous form, whose strength this is at the sliding limit).
+  static constexpr std::array<LawParameter, 4> parameters{{
+      {"kinetic_friction", &ContactLaw::kinetic_friction, "", closed(0.0, kMaxLawFriction), "a friction coefficient >= 0",
+       "static_friction", 1.0},
+      {"reference_time_step", &ContactLaw::reference_time_step, "s", open_closed(0.0, kMaxReferenceTimeStep),
+       "a positive time step (Blaze-DEM's dt)", {}, 1.0, false, true},
+      {"blaze_velocity_scale", &ContactLaw::blaze_velocity_scale, "m/s", open_closed(0.0, kMaxBlazeSpeed), "a positive speed",
+       {}, 1.0, false, true},
+      {"blaze_rest_speed", &ContactLaw::blaze_rest_speed, "m/s", open_closed(0.0, kMaxBlazeSpeed), "a positive speed", {},
+       1.0, false, true},
+  }};
   static Params params(const ContactLaw& law) {
     return {law.kinetic_friction * law.blaze_velocity_scale / law.reference_time_step};
   }

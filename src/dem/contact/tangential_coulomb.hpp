@@ -2,10 +2,13 @@
 // Tangential force: an incremental spring-dashpot (the seed paper's eq. 2) capped by static and
 // kinetic Coulomb friction. Its stiffness comes from the normal model (constant k_t for the
 // linear spring, Mindlin's 8 G* a for Hertz).
+#include <array>
+
 #include "dem/contact/choices.hpp"
 #include "dem/contact/contact_history.hpp"
 #include "dem/contact/sub_model_inputs.hpp"
 #include "dem/contact/tangential_spring.hpp"
+#include "dem/contact/law_parameter.hpp"
 #include "dem/contact_law.hpp"
 #include "dem/vec3.hpp"
 
@@ -19,6 +22,12 @@ struct CoulombTangential {
     double mu_s = 0.0;  // the stick limit |F_t| <= mu_s |F_n|
     double mu_k = 0.0;  // |F_t| = mu_k |F_n| while sliding
   };
+  // mu_s and mu_k (mu_k = mu_s when only mu_s is given).
+  static constexpr std::array<LawParameter, 2> parameters{{
+      {"static_friction", &ContactLaw::static_friction, "", closed(0.0, kMaxLawFriction), "a friction coefficient >= 0"},
+      {"kinetic_friction", &ContactLaw::kinetic_friction, "", closed(0.0, kMaxLawFriction), "a friction coefficient >= 0",
+       "static_friction", 1.0},
+  }};
   static Params params(const ContactLaw& law) { return {law.static_friction, law.kinetic_friction}; }
 
   // The tangential force on body i; updates the history's spring (the evaluator sets the flags
