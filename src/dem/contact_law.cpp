@@ -191,19 +191,49 @@ double critical_time_step(const ContactLaw& particle_law, const std::vector<cons
 }
 
 std::string critical_time_step_formula(const ContactLaw& particle_law, const std::vector<const ContactLaw*>& wall_laws) {
-  bool linear = particle_law.normal_model == NormalModel::linear, hertz = !linear;
-  for (const ContactLaw* law : wall_laws) {
-    linear = linear || law->normal_model == NormalModel::linear;
-    hertz = hertz || law->normal_model == NormalModel::hertz;
+  std::vector<std::string_view> formulas;  // each normal model's once, in the list's order
+  NormalModels::for_each([&](auto model) {
+    using Model = decltype(model);
+    bool used = particle_law.normal_model == Model::model;
+    for (const ContactLaw* law : wall_laws) used = used || law->normal_model == Model::model;
+    if (used) formulas.push_back(Model::time_scale_formula);
+  });
+  if (formulas.size() == 1) return std::string(formulas.front());
+  std::string text = "min(";
+  for (std::size_t k = 0; k < formulas.size(); ++k) text += fmt::format("{}{}", k == 0 ? "" : ", ", formulas[k]);
+  return text + ")";
+}
+
+bool combines_materials(const ContactLaw& law) {
+  return NormalModels::visit(law.normal_model, [](auto model) { return decltype(model)::combines_materials; });
+}
+
+const LawParameter& stiffness_parameter(const ContactLaw& law) {
+  return *NormalModels::visit(law.normal_model, [](auto model) {
+    using Model = decltype(model);
+    return &Model::parameters[Model::stiffness_parameter];
+  });
+}
+
+std::string describe_law(const ContactLaw& law) {
+  const LawChoices c = law_choices(law);
+  std::string text = fmt::format("{} normal, {} damping, {} tangential, {} rolling", to_string(c.normal),
+                                 to_string(law.damping_model), to_string(c.tangential), to_string(c.rolling));
+  std::vector<std::string_view> said;
+  for (const LawParameter& p : active_parameters(law)) {
+    if (std::find(said.begin(), said.end(), p.key) != said.end()) continue;
+    said.push_back(p.key);
+    text += fmt::format("{}{} = {:.4g}{}{}", said.size() == 1 ? ": " : ", ", p.key, law.*p.field,
+                        p.unit.empty() ? "" : " ", p.unit);
   }
-  if (linear && hertz) return "min(sqrt(m_min/k_max), the Rayleigh time T_R)";
-  return linear ? "sqrt(m_min/k_max)" : "the Rayleigh time T_R";
+  return text;
 }
 
 std::string describe_stiffness(const ContactLaw& law, const std::string& owner) {
-  if (law.normal_model == NormalModel::hertz)
-    return fmt::format("Young's modulus of the {} contact law ({:.4g} Pa)", owner, law.youngs_modulus);
-  return fmt::format("normal stiffness of the {} contact law ({:.4g} N/m)", owner, law.normal_stiffness);
+  const LawParameter& p = stiffness_parameter(law);
+  const std::string_view name =
+      NormalModels::visit(law.normal_model, [](auto model) { return decltype(model)::stiffness_name; });
+  return fmt::format("{} of the {} contact law ({:.4g} {})", name, owner, law.*p.field, p.unit);
 }
 
 }  // namespace trapdem

@@ -79,9 +79,19 @@ double contact_time_scale(const ContactLaw& law, const ContactLaw& particle_law,
 double critical_time_step(const ContactLaw& particle_law, const std::vector<const ContactLaw*>& wall_laws, double mass,
                           double radius);
 
+// Whether the law's normal model combines both bodies' materials (Hertz: a wall's contact reads the
+// particles' E and nu too, so they must be valid).
+bool combines_materials(const ContactLaw& law);
+// The parameter that sets the law's contact stiffness (k_n for the linear spring, E for Hertz).
+const LawParameter& stiffness_parameter(const ContactLaw& law);
+
 // How critical_time_step is computed for these laws, for messages: "sqrt(m_min/k_max)" for
 // linear springs, "the Rayleigh time T_R" for Hertz, both for a mix.
 std::string critical_time_step_formula(const ContactLaw& particle_law, const std::vector<const ContactLaw*>& wall_laws);
+// The law in one line for logs: its models and the parameters they read with their values and
+// units ("linear normal, restitution damping, coulomb tangential, none rolling: normal_stiffness =
+// 5e+04 N/m, ...").
+std::string describe_law(const ContactLaw& law);
 // The law's stiffness parameter and its value, for messages: "normal stiffness of the <owner>
 // contact law (1e+06 N/m)" (linear), "Young's modulus of the <owner> contact law (5e+07 Pa)" (Hertz).
 std::string describe_stiffness(const ContactLaw& law, const std::string& owner);

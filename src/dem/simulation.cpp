@@ -77,8 +77,9 @@ void Simulation::clear_rotating_frame() { frame_.reset(); }
 std::size_t Simulation::add_wall(Wall wall) {
   const std::string where = "wall '" + wall.name + "'";
   wall.law.validate(where);
-  if (wall.law.normal_model == NormalModel::hertz)  // the contact's other body: the particles' material
-    law_.validate_material(fmt::format("particle contact law (the particles' material, for the Hertz law of {})", where));
+  if (combines_materials(wall.law))  // the contact's other body: the particles' material
+    law_.validate_material(fmt::format("particle contact law (the particles' material, for the {} law of {})",
+                                       to_string(wall.law.normal_model), where));
   backend_->add_wall_law(law_params(wall.law, law_), law_choices(wall.law));
   state_.walls.push_back(std::move(wall));
   invalidate_lists();

@@ -297,8 +297,7 @@ std::string stiffest_key(const ExperimentConfig& e) {
     }
   }
   const ContactLaw& law = *laws[stiffest].first;
-  return fmt::format("{}.{}", laws[stiffest].second,
-                     law.normal_model == NormalModel::hertz ? "youngs_modulus" : "normal_stiffness");
+  return fmt::format("{}.{}", laws[stiffest].second, stiffness_parameter(law).key);
 }
 
 // The time step derived from the keys must be a usable number: a denormal stiffness (1e-320 N/m)
@@ -365,8 +364,9 @@ ExperimentConfig ExperimentConfig::from(Config& c) {
   e.material.back = read_contact_law(walls.get_table("back"), e.material.base);
   for (const ContactLaw* law : e.material.wall_laws()) {
     // A Hertz wall contact combines the wall's material with the particles'.
-    if (law->normal_model == NormalModel::hertz && !(e.material.particle.youngs_modulus > 0.0))
-      contact.fail("youngs_modulus", "the particles' Young's modulus in Pa: a wall has normal_model = \"hertz\"");
+    if (combines_materials(*law) && !(e.material.particle.youngs_modulus > 0.0))
+      contact.fail("youngs_modulus", fmt::format("the particles' Young's modulus in Pa: a wall has normal_model = \"{}\"",
+                                                 to_string(law->normal_model)));
   }
 
   read_packing_keys(c, e.packing);

@@ -62,12 +62,8 @@ void describe_run(RunLog& recorder, const ExperimentConfig& c, const fs::path& o
                            "at {:.4g} m/s", c.box.width * 1e3, c.box.depth * 1e3, c.box.height * 1e3,
                            c.box.periodic_depth ? "periodic depth" : "front and back walls", c.trapdoor.width * 1e3,
                            c.trapdoor.centre * 1e3, c.trapdoor.travel * 1e3, c.trapdoor.rate));
-  recorder.say(fmt::format("  particles: {}, density {} kg/m3, about {} of them; k_n = {:.3g} N/m, e = {}, mu_s = {}, "
-                           "mu_k = {}, mu_r = {} ({})", c.material.sizes.describe(), c.material.density,
-                           c.expected_particle_count(), c.material.particle.normal_stiffness,
-                           c.material.particle.restitution, c.material.particle.static_friction,
-                           c.material.particle.kinetic_friction, c.material.particle.rolling_friction,
-                           to_string(c.material.particle.rolling_model)));
+  recorder.say(fmt::format("  particles: {}, density {} kg/m3, about {} of them; contact law {}", c.material.sizes.describe(),
+                           c.material.density, c.expected_particle_count(), describe_law(c.material.particle)));
   recorder.say(fmt::format("  time step {:.4g} s ({:.3g} of the critical {:.4g} s), skin {:.3g} mm, {} g, {}",
                            c.time_step(), c.time_step() / c.critical_time_step(), c.critical_time_step(),
                            c.skin() * 1e3, c.spin_up.g_level, threads_text(omp_get_max_threads())));

@@ -13,6 +13,8 @@
 // A particle-wall contact combines the particle's material (the particle law's E, nu) with the
 // wall's (the wall law's); a particle pair has the particle material on both sides.
 #include <array>
+#include <cstddef>
+#include <string_view>
 #include <cmath>
 #include <numbers>
 
@@ -33,6 +35,14 @@ struct NormalHertz {
     double g_star = 0.0;                 // Pa, effective shear modulus G*
     double sqrt_st_over_sn = 0.0;        // sqrt(S_t / S_n) = sqrt(4 G* / E*)
   };
+
+  // What sets the contact's stiffness (parameters[stiffness_parameter]), in words; the contact
+  // combines both bodies' E and nu (a wall's Hertz law reads the particles' material); the time
+  // scale's formula.
+  static constexpr std::size_t stiffness_parameter = 0;
+  static constexpr std::string_view stiffness_name = "Young's modulus";
+  static constexpr bool combines_materials = true;
+  static constexpr std::string_view time_scale_formula = "the Rayleigh time T_R";
 
   // E* and G* of the contact under `law` (the wall's for a wall law) with the particle material.
   // The material's E and nu: read with any normal model (another law's Hertz contact with this

@@ -2,6 +2,8 @@
 // Linear normal spring (the seed paper's eq. 1, F_n = k_n delta) with a constant tangential
 // stiffness k_t (eq. 2).
 #include <array>
+#include <cstddef>
+#include <string_view>
 #include <cmath>
 
 #include "dem/contact/choices.hpp"
@@ -29,6 +31,13 @@ struct NormalLinear {
       {"tangential_stiffness", &ContactLaw::tangential_stiffness, "N/m", closed(0.0, kMaxLawStiffness), "a stiffness >= 0",
        "normal_stiffness", 0.5, false, true},
   }};
+  // What sets the contact's stiffness (parameters[stiffness_parameter]), in words; whether the
+  // contact reads the other body's material too (no: k_n is the law's own); the time scale's formula.
+  static constexpr std::size_t stiffness_parameter = 0;
+  static constexpr std::string_view stiffness_name = "normal stiffness";
+  static constexpr bool combines_materials = false;
+  static constexpr std::string_view time_scale_formula = "sqrt(m_min/k_max)";
+
   static Params params(const ContactLaw& law, const ContactLaw& /*particle_law*/) {
     return {law.normal_stiffness, law.tangential_stiffness, std::sqrt(law.tangential_stiffness / law.normal_stiffness)};
   }
