@@ -14,6 +14,7 @@
 #include "dem/contact/choices.hpp"
 #include "dem/contact/contact_history.hpp"
 #include "dem/contact/sub_model_inputs.hpp"
+#include "dem/contact/blaze_scales.hpp"
 #include "dem/contact/law_parameter.hpp"
 #include "dem/contact_law.hpp"
 
@@ -33,8 +34,7 @@ struct AngularDampingRolling {
       {"rolling_friction", &ContactLaw::rolling_friction, "", closed_open(0.0, 1.0),
        "a factor in [0, 1) with rolling_model = \"angular_damping\" (omega is multiplied by 1 - mu_r per reference "
        "step)"},
-      {"reference_time_step", &ContactLaw::reference_time_step, "s", open_closed(0.0, kMaxReferenceTimeStep),
-       "a positive time step (Blaze-DEM's dt)", {}, 1.0, false, true},
+      kBlazeReferenceTimeStep,
   }};
   static Params params(const ContactLaw&) { return {}; }
 

@@ -24,6 +24,7 @@
 #include "dem/contact/choices.hpp"
 #include "dem/contact/contact_history.hpp"
 #include "dem/contact/sub_model_inputs.hpp"
+#include "dem/contact/blaze_scales.hpp"
 #include "dem/contact/law_parameter.hpp"
 #include "dem/contact_law.hpp"
 #include "dem/vec3.hpp"
@@ -39,16 +40,8 @@ struct BlazeViscousTangential {
     double rest_speed = 0.0;     // m/s, V when the centres' relative speed is exactly 0 (Blaze: 1 cm/s)
   };
   // mu_k (Blaze's strength factor) and Blaze-DEM's scales: its time step and its two speeds.
-  static constexpr std::array<LawParameter, 4> parameters{{
-      {"kinetic_friction", &ContactLaw::kinetic_friction, "", closed(0.0, kMaxLawFriction), "a friction coefficient >= 0",
-       "static_friction", 1.0},
-      {"reference_time_step", &ContactLaw::reference_time_step, "s", open_closed(0.0, kMaxReferenceTimeStep),
-       "a positive time step (Blaze-DEM's dt)", {}, 1.0, false, true},
-      {"blaze_velocity_scale", &ContactLaw::blaze_velocity_scale, "m/s", open_closed(0.0, kMaxBlazeSpeed), "a positive speed",
-       {}, 1.0, false, true},
-      {"blaze_rest_speed", &ContactLaw::blaze_rest_speed, "m/s", open_closed(0.0, kMaxBlazeSpeed), "a positive speed", {},
-       1.0, false, true},
-  }};
+  static constexpr std::array<LawParameter, 4> parameters{
+      kBlazeStrengthFactor, kBlazeReferenceTimeStep, kBlazeVelocityScale, kBlazeRestSpeed};
   static Params params(const ContactLaw& law) {
     return {law.kinetic_friction * law.blaze_velocity_scale / law.reference_time_step, law.blaze_rest_speed};
   }
