@@ -147,11 +147,7 @@ TEST_P(Conservation, ElasticFrictionlessGasConservesEnergy) {
 // is then constant to round-off over 2000 steps, tolerance 1e-12 of sum m|v|. A force applied to
 // one body only, or a partner share gathered twice, breaks both by O(1).
 TEST_P(Conservation, DensePackingObeysNewtonsThirdLaw) {
-  ContactLaw law = frictionless_law(1.0e4, 0.5);
-  law.static_friction = 0.4;
-  law.kinetic_friction = 0.3;
-  law.rolling_friction = 0.1;
-  law.rolling_model = RollingModel::elastic_plastic;
+  ContactLaw law = sliding_rolling_law(1.0e4, 0.5, 0.4, 0.3, 0.1);  // mu_s, mu_k, mu_r
   SimulationSettings s;
   s.domain = periodic_box(5 * 0.00196);
   Simulation sim(lattice(5, 0.00196, 0.00097, 0.00101, 1e-5, 0.05, 3), law, s);

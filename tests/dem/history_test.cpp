@@ -27,11 +27,7 @@ struct Outcome {
 // that history would jolt it. Ids are given in reverse spatial order so re-ordering moves them.
 Outcome run_pyramid(double skin, int reorder_every) {
   const double r = 0.001;
-  ContactLaw law = frictionless_law(1.0e4, 0.3);
-  law.static_friction = 0.6;
-  law.kinetic_friction = 0.5;
-  law.rolling_friction = 0.1;
-  law.rolling_model = RollingModel::elastic_plastic;
+  ContactLaw law = sliding_rolling_law(1.0e4, 0.3, 0.6, 0.5, 0.1);  // mu_s, mu_k, mu_r
   ContactLaw floor_law = law;
   floor_law.static_friction = floor_law.kinetic_friction = 0.2;  // base slides on the floor
   const double h = r * std::sqrt(8.0 / 3.0) * 0.999;              // top sphere slightly pressed in

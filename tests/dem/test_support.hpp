@@ -45,6 +45,17 @@ inline ContactLaw frictionless_law(double kn, double restitution) {
   return law;
 }
 
+// frictionless_law(kn, e) with Coulomb friction (mu_s, mu_k) and EPSD rolling resistance mu_r
+// (Ai et al. 2011's default dashpot): every sub-model of the law in play.
+inline ContactLaw sliding_rolling_law(double kn, double restitution, double mu_s, double mu_k, double mu_r) {
+  ContactLaw law = frictionless_law(kn, restitution);
+  law.static_friction = mu_s;
+  law.kinetic_friction = mu_k;
+  law.rolling_friction = mu_r;
+  law.rolling_model = RollingModel::elastic_plastic;
+  return law;
+}
+
 // Brute-force O(N^2) reference for the pair list: every pair (i < j) closer than r_i + r_j + skin
 // (minimum image on periodic axes).
 inline std::vector<std::pair<std::uint32_t, std::uint32_t>> brute_force_pairs(const Particles& p, const Domain& domain,

@@ -36,11 +36,7 @@ struct Snapshot {
 // resistance, 1500 steps (they hit the floor and each other: hundreds of contacts).
 Snapshot settle(int threads) {
   ThreadCount guard(threads);
-  ContactLaw law = frictionless_law(1.0e4, 0.3);
-  law.static_friction = 0.5;
-  law.kinetic_friction = 0.4;
-  law.rolling_friction = 0.1;
-  law.rolling_model = RollingModel::elastic_plastic;
+  ContactLaw law = sliding_rolling_law(1.0e4, 0.3, 0.5, 0.4, 0.1);  // mu_s, mu_k, mu_r
   Particles p;
   Rng rng(21);
   std::int64_t id = 0;
