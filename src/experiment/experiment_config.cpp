@@ -45,8 +45,10 @@ constexpr double kMaxSpinRate = 150.0;         // rad/s (1430 rpm): the fastest 
 // (contact/law_parameter.hpp): the chosen models' with their bounds, required when the base law has
 // no valid value (a Young's modulus for Hertz, Blaze-DEM's time step); a material's (E, nu) always;
 // another model's key refused when it is exclusive to that model (its value would be ignored), else
-// read with its bounds and kept (a preset's friction under a law that does not use it).
-ContactLaw read_contact_law(Config table, const ContactLaw& base) {
+// read with its bounds and kept (a preset's friction under a law that does not use it), and noted in
+// `unread` ("<table>.<key> (read only with ...)") for run.log.
+ContactLaw read_contact_law(Config table, const std::string& table_name, const ContactLaw& base,
+                            std::vector<std::string>& unread) {
   ContactLaw law = base;
   law.normal_model = parse_choice<NormalModel>(
       table.get_choice("normal_model", to_string(base.normal_model), choice_names<NormalModel>()));
@@ -93,6 +95,11 @@ ContactLaw read_contact_law(Config table, const ContactLaw& base) {
       law.*p.field = fallback;
     if (table.has(p.key) && any.bounds.contain(law.*p.field) && !p.bounds.contain(law.*p.field))
       table.fail(p.key, p.meaning);
+    // Noted when no model that is on reads it, once its value is in (the rolling switch, first in
+    // the list, is read by the rolling model it turns off).
+    const bool switch_of_chosen = mine && p.key == declared.front().key;
+    if (table.has(p.key) && !p.material && !switch_of_chosen && !find(active_parameters(law), p.key))
+      unread.push_back(fmt::format("{}.{} (read only with {})", table_name, p.key, readers_of(p.key)));
   }
   return law;
 }
@@ -357,11 +364,12 @@ ExperimentConfig ExperimentConfig::from(Config& c) {
   }
 
   Config contact = c.get_table("contact");
-  e.material.particle = read_contact_law(contact, ContactLaw{});
+  std::vector<std::string>& unread = e.material.unread_parameters;
+  e.material.particle = read_contact_law(contact, "contact", ContactLaw{}, unread);
   Config walls = c.get_table("walls");
-  e.material.base = read_contact_law(walls.get_table("base"), e.material.particle);
-  e.material.front = read_contact_law(walls.get_table("front"), e.material.base);
-  e.material.back = read_contact_law(walls.get_table("back"), e.material.base);
+  e.material.base = read_contact_law(walls.get_table("base"), "walls.base", e.material.particle, unread);
+  e.material.front = read_contact_law(walls.get_table("front"), "walls.front", e.material.base, unread);
+  e.material.back = read_contact_law(walls.get_table("back"), "walls.back", e.material.base, unread);
   for (const ContactLaw* law : e.material.wall_laws()) {
     // A Hertz wall contact combines the wall's material with the particles'.
     if (combines_materials(*law) && !(e.material.particle.youngs_modulus > 0.0))

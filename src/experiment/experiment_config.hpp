@@ -39,6 +39,10 @@ struct MaterialConfig {
   ContactLaw back;             // particle against the back plate (aluminium)
 
   std::vector<const ContactLaw*> wall_laws() const;  // base, front, back
+  // The keys a table gives that no model of its law reads (a preset's friction under Blaze-DEM's
+  // law), each with the choices that would read it; said in run.log, not an error: a study may
+  // switch a preset's law and cannot remove the preset's keys.
+  std::vector<std::string> unread_parameters;
 };
 
 struct PluviationConfig {

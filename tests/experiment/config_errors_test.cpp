@@ -307,6 +307,31 @@ INSTANTIATE_TEST_SUITE_P(Table, ConfigErrors, ::testing::ValuesIn(cases()),
 
 // A good configuration passes; its resolved record has every default filled in and the derived
 // time step, and reads back (the [derived] table is output only) to the same experiment.
+// A key that no model of its law reads is kept and noted, not refused, unless it is exclusive to a
+// model that is off (ReferenceStepWithCoulomb above): a study may switch a preset's law (the
+// seed-law study puts Blaze-DEM's law over the demo preset, whose friction keys stay).
+TEST(ConfigGood, AKeyNoChosenModelReadsIsNoted) {
+  Config config = Config::parse(
+      "[contact]\n"
+      "tangential_model = \"blaze_tresca\"\n"
+      "reference_time_step = 2e-8\n"
+      "static_friction = 0.5\n"
+      "[walls.front]\n"
+      "rolling_damping = 0.4\n"
+      "[pluviation]\n"
+      "count = 1000\n",
+      "good.toml");
+  const ExperimentConfig e = ExperimentConfig::from(config);
+  EXPECT_EQ(e.material.particle.static_friction, 0.5);
+  ASSERT_EQ(e.material.unread_parameters.size(), 2u);
+  EXPECT_EQ(e.material.unread_parameters[0], "contact.static_friction (read only with tangential_model = \"coulomb\")");
+  EXPECT_EQ(e.material.unread_parameters[1],
+            "walls.front.rolling_damping (read only with rolling_model = \"elastic_plastic\" with rolling_friction > 0)");
+  // Under the law that reads them, nothing is noted.
+  Config coulomb = Config::parse("[contact]\nstatic_friction = 0.5\n[pluviation]\ncount = 1000\n", "good.toml");
+  EXPECT_TRUE(ExperimentConfig::from(coulomb).material.unread_parameters.empty());
+}
+
 TEST(ConfigGood, ResolvedTomlHoldsTheDerivedTimeStep) {
   Config config = Config::parse(
       "name = \"good\"\n"
