@@ -13,6 +13,8 @@
 #include "core/text_escape.hpp"
 #include "plot/colour_map.hpp"
 #include "plot/line_chart.hpp"
+#include "plot/axes.hpp"
+#include "plot/contour_plot.hpp"
 #include "plot/specimen_figures.hpp"
 #include "study/findings.hpp"
 #include "study/parameter_differences.hpp"
@@ -281,10 +283,18 @@ fs::path write_study_report(const fs::path& dir, const StudyReportInput& in) {
   if (has_panel)
     write_figure(dir, panel, [&](const fs::path& p) { plot::write_strain_panel(p, finals, panel_titles, vmax); },
                  written);
+  // The contour figures on one scale: the colours span +-the trapdoor's displacement (the same for
+  // every case at report.contours_at), the lines at one step for every case (not each figure's own
+  // automatic levels, which would differ with each field's range).
+  double contour_travel = 0.0;  // m
+  for (const StudyCaseResult& c : in.cases)
+    if (c.contour_analysis) contour_travel = std::max(contour_travel, c.contour_analysis->trapdoor_travel());
+  const plot::ContourLevels contour_step{{}, contour_travel > 0.0 ? plot::nice_step(contour_travel, 8) : 0.0};
   for (const StudyCaseResult& c : in.cases)
     if (c.contour_analysis)
       write_figure(dir, report_figure(contour_stem(c), in.format),
-                   [&](const fs::path& p) { plot::write_displacement_contours(p, *c.contour_analysis); }, written);
+                   [&](const fs::path& p) { plot::write_displacement_contours(p, *c.contour_analysis, contour_step); },
+                   written);
   for (const StudyCaseResult& c : in.cases) {
     copy_stored_figure(dir, c, c.stored_strain_figure, written);
     copy_stored_figure(dir, c, c.stored_displacement_figure, written);
@@ -388,7 +398,12 @@ fs::path write_study_report(const fs::path& dir, const StudyReportInput& in) {
     if (!c.final_analysis && c.stored_strain_figure.empty())
       h += fmt::format("<p class=\"note\">{}: {}</p>\n", markup_escape(c.summary.label), markup_escape(c.missing_note));
 
-  h += fmt::format("<h2>Vertical displacement at δ = {}</h2>\n<div class=\"grid\">\n", markup_escape(contours_at));
+  h += fmt::format("<h2>Vertical displacement at δ = {}</h2>\n", markup_escape(contours_at));
+  if (contour_step.step > 0.0)
+    h += fmt::format("<p class=\"lead\">One scale for every case: the colours span settlement −δ to +δ (the trapdoor's "
+                     "displacement, {}), the contour lines every {}.</p>\n",
+                     markup_escape(format_mm(contour_travel)), markup_escape(format_mm(contour_step.step)));
+  h += "<div class=\"grid\">\n";
   for (const StudyCaseResult& c : in.cases) {
     if (c.contour_analysis) {
       h += fmt::format("<figure>{}<figcaption>{}</figcaption></figure>\n",

@@ -198,6 +198,12 @@ TEST_F(StudyRun, ReportHasEveryFigureAndMeasuredNumbers) {
   EXPECT_NE(page.find("<code>contact.static_friction</code>"), std::string::npos);
   EXPECT_EQ(page.find("<code>name</code>"), std::string::npos);
   EXPECT_EQ(page.find("http"), std::string::npos) << "the page must work offline";
+  // The contour figures share one scale, and the page says which (contours_at = 2 mm: colours over
+  // +-2 mm, lines at a 1-2-5 step of it).
+  EXPECT_NE(page.find("One scale for every case: the colours span settlement −δ to +δ (the trapdoor's displacement, "
+                      "2 mm), the contour lines every "),
+            std::string::npos)
+      << page;
 }
 
 // study.json names the study file relative to the study folder (a published copy names no
