@@ -48,23 +48,23 @@ void append_model_parameters(Choice chosen, std::vector<LawParameter>& out) {
 
 }  // namespace
 
-std::vector<LawParameter> chosen_parameters(const ContactLaw& law) {
+namespace {
+// The parameters of the law's normal, damping and tangential models, and of its rolling model when
+// `with_rolling`.
+std::vector<LawParameter> parameters_of(const ContactLaw& law, bool with_rolling) {
   std::vector<LawParameter> out;
   append_model_parameters<NormalModels>(law.normal_model, out);
   for (const LawParameter& p : RestitutionDamping::parameters) out.push_back(p);
   append_model_parameters<TangentialModels>(law.tangential_model, out);
-  append_model_parameters<RollingModels>(law.rolling_model, out);
+  if (with_rolling) append_model_parameters<RollingModels>(law.rolling_model, out);
   return out;
 }
+}  // namespace
 
-std::vector<LawParameter> active_parameters(const ContactLaw& law) {
-  std::vector<LawParameter> out;
-  append_model_parameters<NormalModels>(law.normal_model, out);
-  for (const LawParameter& p : RestitutionDamping::parameters) out.push_back(p);
-  append_model_parameters<TangentialModels>(law.tangential_model, out);
-  if (law.rolling_friction != 0.0) append_model_parameters<RollingModels>(law.rolling_model, out);  // else off
-  return out;
-}
+std::vector<LawParameter> chosen_parameters(const ContactLaw& law) { return parameters_of(law, true); }
+
+// A rolling model with mu_r = 0 is off (law_choices): none of its parameters is read then.
+std::vector<LawParameter> active_parameters(const ContactLaw& law) { return parameters_of(law, law.rolling_friction != 0.0); }
 
 std::vector<LawParameter> declared_parameters() {
   std::vector<LawParameter> out;
