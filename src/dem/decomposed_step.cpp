@@ -15,6 +15,8 @@ namespace trapdem {
 void Simulation::set_decomposition(std::unique_ptr<Decomposition> decomposition) {
   if (setup_done_)
     throw InputError("a decomposition is attached before the first step (every rank from the same initial state)");
+  if (decomposition && !state_.bodies.empty())
+    throw InputError("rigid bodies run on one process (a body's members would cross ranks); run without ranks");
   if (settings_.domain.periodic[0])
     throw InputError("domain: a periodic x axis is not supported across ranks (the slabs split x); make x bounded");
   decomposition_ = std::move(decomposition);

@@ -92,6 +92,9 @@ void Simulation::check_stability() const {
 
 double Simulation::translational_kinetic_energy() const {
   double e = 0.0;
+  const RigidBodies& bodies = state_.bodies;
+  for (std::size_t b = 0; b < bodies.size(); ++b) e += 0.5 * bodies.mass[b] * norm2(bodies.velocity[b]);
+  if (!bodies.empty()) return e;
   const Particles& p = state_.particles;
   for (std::size_t i = 0; i < owned_count(); ++i) e += 0.5 * p.mass[i] * norm2(p.velocity[i]);
   return global_sum(e);
@@ -99,6 +102,9 @@ double Simulation::translational_kinetic_energy() const {
 
 double Simulation::rotational_kinetic_energy() const {
   double e = 0.0;
+  const RigidBodies& bodies = state_.bodies;  // L . w / 2
+  for (std::size_t b = 0; b < bodies.size(); ++b) e += 0.5 * dot(bodies.angular_momentum[b], bodies.angular_velocity(b));
+  if (!bodies.empty()) return e;
   const Particles& p = state_.particles;
   for (std::size_t i = 0; i < owned_count(); ++i) e += 0.5 / p.inv_inertia[i] * norm2(p.angular_velocity[i]);
   return global_sum(e);
@@ -109,14 +115,25 @@ double Simulation::potential_energy(double reference_height) const {
   const Vec3 g = gravity();
   const double g_len = norm(g);
   double e = 0.0;
+  const RigidBodies& bodies = state_.bodies;
   if (g_len > 0.0) {
     const Vec3 up = -g / g_len;
-    for (std::size_t i = 0; i < owned_count(); ++i)
+    for (std::size_t b = 0; b < bodies.size(); ++b)
+      e += bodies.mass[b] * g_len * (dot(bodies.position[b], up) - reference_height);
+    for (std::size_t i = 0; bodies.empty() && i < owned_count(); ++i)
       e += p.mass[i] * g_len * (dot(p.position[i], up) - reference_height);
   }
   if (frame_) {
     const Vec3 level{frame_->axis_point.x, frame_->axis_point.y, reference_height};
-    e += frame_potential_energy(p, owned_count(), *frame_, time_, norm(frame_->radius_vector(level)));
+    const double reference_radius = norm(frame_->radius_vector(level));
+    if (bodies.empty()) {
+      e += frame_potential_energy(p, owned_count(), *frame_, time_, reference_radius);
+    } else {  // of the centres of mass (the frame's torque about them is not modelled: body_motion.hpp)
+      const FrameSpin s = frame_->spin ? frame_->spin(time_) : FrameSpin{};
+      for (std::size_t b = 0; b < bodies.size(); ++b)
+        e += 0.5 * bodies.mass[b] * s.omega * s.omega *
+             (reference_radius * reference_radius - norm2(frame_->radius_vector(bodies.position[b])));
+    }
   }
   return global_sum(e);
 }

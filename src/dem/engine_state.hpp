@@ -12,6 +12,7 @@
 #include "dem/pair_histories.hpp"
 #include "dem/pair_list.hpp"
 #include "dem/particles.hpp"
+#include "dem/rigid/rigid_bodies.hpp"
 #include "dem/vec3.hpp"
 #include "dem/wall.hpp"
 #include "dem/wall_list.hpp"
@@ -49,6 +50,10 @@ struct EngineState {
   // (copies of other ranks' particles, whose forces a pass computes as shares to send back).
   Particles particles;
   std::size_t ghosts = 0;
+  // Rigid bodies (clumps, rigid/rigid_bodies.hpp). None: every particle is a free sphere. Else every
+  // particle is a member of one body, and the step moves the bodies (rigid/body_motion.hpp); a force
+  // back end sees only the member spheres.
+  RigidBodies bodies;
   std::vector<Wall> walls;  // with the loads (force, torque) the last force pass summed
   ContactLists lists;
 

@@ -6,6 +6,7 @@
 #include <cmath>
 #include <limits>
 #include <numeric>
+#include <optional>
 
 #include <fmt/format.h>
 
@@ -17,9 +18,11 @@
 
 namespace trapdem {
 
-Simulation::Simulation(Particles particles, const ContactLaw& particle_law, SimulationSettings settings)
+Simulation::Simulation(Particles particles, const ContactLaw& particle_law, SimulationSettings settings,
+                       RigidBodies bodies)
     : backend_(make_threaded_cpu_backend()), law_(particle_law), settings_(settings) {
   state_.particles = std::move(particles);
+  state_.bodies = std::move(bodies);
   law_.validate("particle contact law");
   backend_->set_particle_law(law_params(law_, law_), law_choices(law_));
   state_.lists.contacts = state_.lists.contacts_next = PairHistories(keeps_rolling_spring(law_choices(law_)));
@@ -28,6 +31,10 @@ Simulation::Simulation(Particles particles, const ContactLaw& particle_law, Simu
     if (!(settings_.domain.upper[a] > settings_.domain.lower[a]))
       throw InputError(fmt::format("domain: upper bound must exceed lower bound on axis {} (got {} .. {})", "xyz"[a],
                                    settings_.domain.lower[a], settings_.domain.upper[a]));
+  }
+  if (!state_.bodies.empty()) {
+    check_bodies_allowed("rigid bodies");
+    state_.bodies.locate_members(state_.particles.id);  // every particle a member
   }
   if (settings_.skin > 0.0) {
     skin_ = settings_.skin;
@@ -119,6 +126,9 @@ std::size_t Simulation::find_wall(const std::string& name) const {
 }
 
 void Simulation::add_particle(std::int64_t id, const Vec3& x, double radius, double density, const Vec3& v) {
+  if (!state_.bodies.empty())
+    throw InputError(fmt::format("particle {}: a run with rigid bodies takes bodies only (a lone sphere: a body of "
+                                 "one member, add_body)", id));
   if (!(radius > 0.0) || !(density > 0.0))
     throw InputError(fmt::format("particle {}: radius ({} m) and density ({} kg/m3) must be positive", id, radius, density));
   drop_ghosts();  // the owned particles come first
@@ -130,6 +140,7 @@ void Simulation::add_particle(std::int64_t id, const Vec3& x, double radius, dou
 void Simulation::remove_particles(const std::vector<std::uint32_t>& indices) {
   Particles& p = state_.particles;
   if (indices.empty()) return;
+  if (!state_.bodies.empty()) throw InputError("remove_particles: the particles are members of rigid bodies");
   if (!history_pending_ && !state_.lists.pairs.first.empty()) {
     pending_history_.store_pairs(state_.lists.pairs, state_.lists.pair_contact, state_.lists.contacts, p.id);
     pending_history_.store_walls(state_.lists.walls, p.id);
@@ -145,12 +156,60 @@ void Simulation::remove_particles(const std::vector<std::uint32_t>& indices) {
   invalidate_lists();
 }
 
+void Simulation::add_body(std::int64_t body_id, std::int64_t first_member_id, const ClumpTemplate& shape,
+                          double density, const Vec3& position, const Quaternion& orientation, const Vec3& velocity,
+                          const Vec3& angular_velocity) {
+  check_bodies_allowed("add_body");
+  if (state_.bodies.empty() && !state_.particles.empty())
+    throw InputError(fmt::format("body {}: this run's particles are free spheres; a run takes either spheres or "
+                                 "rigid bodies (a lone sphere: a body of one member)", body_id));
+  // Appending keeps the existing indices: the lists' history stays valid until the rebuild.
+  add_rigid_body(state_.bodies, state_.particles, body_id, first_member_id, shape, density, position, orientation,
+                 velocity, angular_velocity);
+  invalidate_lists();
+}
+
+void Simulation::check_bodies_allowed(const char* what) const {
+  if (decomposition_)
+    throw InputError(fmt::format("{}: rigid bodies run on one process (a body's members would cross ranks); run "
+                                 "without ranks", what));
+  for (int a = 0; a < 3; ++a)
+    if (settings_.domain.periodic[a])
+      throw InputError(fmt::format("{}: rigid bodies need bounded axes (the {} axis is periodic)", what, "xyz"[a]));
+}
+
+void Simulation::restore_bodies(RigidBodies bodies) {
+  if (!bodies.empty()) check_bodies_allowed("restore_bodies");
+  state_.bodies = std::move(bodies);
+  invalidate_lists();
+}
+
 double Simulation::critical_time_step() const {
   const Particles& p = state_.particles;
   if (p.empty()) return std::numeric_limits<double>::infinity();
   std::vector<const ContactLaw*> wall_laws;
   for (const Wall& w : state_.walls) wall_laws.push_back(&w.law);
   double t = std::numeric_limits<double>::infinity();
+  const RigidBodies& bodies = state_.bodies;
+  if (!bodies.empty()) {
+    // A contact force on a member turns its body too: at arm l from the centre of mass a spring k
+    // acting on the body's least moment I_min has the period of a mass I_min / l^2 (a torsional
+    // oscillator, T = 2 pi sqrt(I / (k l^2))). The time scale of each member's contacts is that of
+    // the smaller of the body's mass and this, l the farthest reach of a member's surface.
+    for (std::size_t b = 0; b < bodies.size(); ++b) {
+      double reach = 0.0, smallest_radius = std::numeric_limits<double>::infinity();
+      for (std::uint32_t m = bodies.first_member[b]; m < bodies.first_member[b + 1]; ++m) {
+        const double r = p.radius[bodies.member_particle[m]];
+        reach = std::max(reach, norm(bodies.member_offset[m]) + r);
+        smallest_radius = std::min(smallest_radius, r);
+      }
+      const Vec3& inertia = bodies.principal_inertia[b];
+      const double least = std::min({inertia.x, inertia.y, inertia.z});
+      const double mass = std::min(bodies.mass[b], least / (reach * reach));
+      t = std::min(t, trapdem::critical_time_step(law_, wall_laws, mass, smallest_radius));
+    }
+    return t;
+  }
   for (std::size_t i = 0; i < p.size(); ++i)
     t = std::min(t, trapdem::critical_time_step(law_, wall_laws, p.mass[i], p.radius[i]));
   return t;
@@ -170,10 +229,13 @@ void Simulation::step() {
   // complete, where the back end can (ForceBackend::fuses_second_half_kick). Not on ranks (a force
   // is complete only once the ghosts' shares are back) nor in a rotating frame (its kick needs the
   // positions after the sweep).
-  const bool fused_kick = backend_->fuses_second_half_kick() && !decomposition_ && !frame_;
+  // Nor with rigid bodies: a member's force is complete before its body's.
+  const bool with_bodies = !state_.bodies.empty();
+  const bool fused_kick = backend_->fuses_second_half_kick() && !decomposition_ && !frame_ && !with_bodies;
   if (!setup_done_) {  // forces of the initial state, so the first half kick sees them
     rebuild_lists_agreed();
     forces(false);
+    if (with_bodies) reduce_member_loads(state_.bodies, state_.particles);
     setup_done_ = true;
   }
   integrate_positions();  // first half kick and drift
@@ -183,7 +245,15 @@ void Simulation::step() {
     case NextLists::keep: update_ghosts(); break;
   }
   forces(fused_kick);
-  if (!fused_kick) bad_particle_ = kick_owned() ? first_non_finite_particle() : -1;  // second half kick
+  if (with_bodies) {
+    reduce_member_loads(state_.bodies, state_.particles);
+    const std::optional<FrameKick> frame =
+        frame_ ? std::optional<FrameKick>(FrameKick(*frame_, time_, 0.5 * dt_)) : std::nullopt;
+    const BodyKick kick = body_kick(frame ? &*frame : nullptr);
+    bad_particle_ = bodies_second_half_kick(state_.bodies, state_.particles, kick) ? first_non_finite_particle() : -1;
+  } else if (!fused_kick) {
+    bad_particle_ = kick_owned() ? first_non_finite_particle() : -1;  // second half kick
+  }
   stats_.ghost_steps += std::int64_t(state_.ghosts);
   ++stats_.steps;
   check_stability_agreed();
@@ -261,11 +331,27 @@ PairList Simulation::pairs() const {
   return copy;
 }
 
+BodyKick Simulation::body_kick(const FrameKick* frame) const {
+  return {gravity(), 0.5 * dt_, !settings_.freeze_rotation, spin_retention(law_, dt_), frame};
+}
+
 void Simulation::integrate_positions() {
   Particles& p = state_.particles;
   // Particles added since the last build have no reference position: the lists are invalid then
   // and will be rebuilt anyway.
   const bool track = lists_valid_ && state_.lists.position_at_build.size() == p.size();
+  if (!state_.bodies.empty()) {
+    const std::optional<FrameKick> frame =
+        frame_ ? std::optional<FrameKick>(FrameKick(*frame_, time_, 0.5 * dt_)) : std::nullopt;
+    bodies_first_half_kick_and_drift(state_.bodies, p, body_kick(frame ? &*frame : nullptr));
+    const DriftReport drift = measure_drift(p.position, p.size(), track ? state_.lists.position_at_build.data() : nullptr,
+                                            settings_.domain);
+    displacements_ = drift.displacements;
+    escaped_particle_ = drift.escaped;
+    move_walls(state_.walls, time_, dt_);
+    time_ += dt_;
+    return;
+  }
   if (frame_) frame_first_half_kick(p, owned_count(), FrameKick(*frame_, time_, 0.5 * dt_), 0.5 * dt_);
   const Vec3* at_build = track ? state_.lists.position_at_build.data() : nullptr;
   const DriftReport drift = first_half_kick_and_drift(p, owned_count(), at_build, gravity(), dt_,
@@ -326,11 +412,13 @@ void Simulation::rebuild_lists() {
     p.permute(cells.order);
     cells = in_cell_order(std::move(cells));
   }
+  if (!state_.bodies.empty()) state_.bodies.locate_members(p.id);
   if (decomposition_) {
     state_.ghosts = decomposition_->exchange_ghosts(p, cell);
     if (state_.ghosts > 0) cells = sort_into_cells(p.position, dom, cell);
   }
   build_pairs(p, cells, dom, skin_, state_.lists.pairs);
+  if (!state_.bodies.empty()) exclude_pairs_within_bodies(state_.lists.pairs, state_.bodies.body_of_particle);
   if (state_.ghosts > 0) keep_pairs_computed_here(state_.lists.pairs, owned_count(), p.id);
   size_contact_arrays();
   archive.restore_pairs(state_.lists.pairs, p.id, state_.lists.pair_contact, state_.lists.contacts);
@@ -377,6 +465,10 @@ void Simulation::restore(double time, const SimulationStats& stats, ListState li
   state_.lists.position_at_build = std::move(lists.position_at_build);
   state_.lists.wall_displacement_at_build = std::move(lists.wall_displacement_at_build);
   rebuilds_since_reorder_ = lists.rebuilds_since_reorder;
+  if (!state_.bodies.empty()) {  // the particles are in the checkpoint's order; their forces, the checkpoint's
+    state_.bodies.locate_members(state_.particles.id);
+    reduce_member_loads(state_.bodies, state_.particles);
+  }
   compact_pair_history();
   find_particles_near_walls();
   find_partner_reach();
@@ -401,6 +493,10 @@ void Simulation::resume_from_histories(double time, const SimulationStats& stats
     auto here = [&](std::int64_t id) { return std::binary_search(mine.begin(), mine.end(), id); };
     std::erase_if(histories.pairs, [&](const HistoryArchive::PairRecord& r) { return !here(r.low); });
     std::erase_if(histories.walls, [&](const HistoryArchive::WallRecord& r) { return !here(r.particle); });
+  }
+  if (!state_.bodies.empty()) {
+    state_.bodies.locate_members(state_.particles.id);
+    reduce_member_loads(state_.bodies, state_.particles);
   }
   pending_history_ = std::move(histories);
   history_pending_ = true;

@@ -16,6 +16,8 @@
 #include "dem/pair_histories.hpp"
 #include "dem/pair_list.hpp"
 #include "dem/particles.hpp"
+#include "dem/rigid/rigid_bodies.hpp"
+#include "dem/rigid/body_motion.hpp"
 #include "dem/rotating_frame.hpp"
 #include "dem/wall.hpp"
 #include "dem/wall_list.hpp"
@@ -48,7 +50,10 @@ class Decomposition;    // the parallel back end (decomposition.hpp)
 
 class Simulation {
  public:
-  Simulation(Particles particles, const ContactLaw& particle_law, SimulationSettings settings);
+  // With `bodies` (clumps, rigid/rigid_bodies.hpp) the particles are their members, every one of
+  // them (add_rigid_body builds both). A run with bodies needs one process and no periodic axis.
+  Simulation(Particles particles, const ContactLaw& particle_law, SimulationSettings settings,
+             RigidBodies bodies = {});
   Simulation(Simulation&&) noexcept;
   Simulation& operator=(Simulation&&) noexcept;
   ~Simulation();
@@ -83,7 +88,13 @@ class Simulation {
   // decomposition each rank adds the particles whose sites it owns (owns_site).
   bool owns_site(const Vec3& x) const;
   void add_particle(std::int64_t id, const Vec3& x, double radius, double density, const Vec3& v = {});
-  void remove_particles(const std::vector<std::uint32_t>& indices);
+  void remove_particles(const std::vector<std::uint32_t>& indices);  // not in a run with bodies
+  // Adds a rigid body during a run (a clump's pluviation; add_rigid_body, rigid_bodies.hpp): in a
+  // run of bodies only (one without particles, or whose particles are all members of bodies).
+  void add_body(std::int64_t body_id, std::int64_t first_member_id, const ClumpTemplate& shape, double density,
+                const Vec3& position, const Quaternion& orientation, const Vec3& velocity = {},
+                const Vec3& angular_velocity = {});
+  const RigidBodies& bodies() const { return state_.bodies; }
 
   void step();
   void run(std::int64_t steps);
@@ -129,11 +140,13 @@ class Simulation {
     std::int64_t rebuilds_since_reorder = 0;
   };
   ListState list_state() const;
-  // Restores time, counters and lists; particles (forces and torques included) and walls (origin,
-  // displacement, load) must already hold the checkpoint's values. On a rank of a decomposition the
+  // Restores time, counters and lists; particles (forces and torques included), bodies
+  // (restore_bodies) and walls (origin, displacement, load) must already hold the checkpoint's values. On a rank of a decomposition the
   // particles are the rank's as checkpointed (owned, then `ghosts` ghosts) and the decomposition's
   // own state is restored by its owner.
   void restore(double time, const SimulationStats& stats, ListState lists, std::size_t ghosts = 0);
+  // A checkpoint's bodies (every per-body and per-member array but the derived ones), before restore().
+  void restore_bodies(RigidBodies bodies);
   // Resumes from a state without lists (a checkpoint of another rank count): particles (forces and
   // torques included, all of them on every rank) and walls already set; the contact histories come
   // by ids and the next step rebuilds the lists. With a decomposition attached, each rank keeps
@@ -154,6 +167,8 @@ class Simulation {
 
  private:
   void integrate_positions();
+  BodyKick body_kick(const FrameKick* frame) const;  // this step's half kick of the bodies
+  void check_bodies_allowed(const char* what) const;  // one process, no periodic axis
   // Whether a pair or particle-wall contact could form unlisted before the next build, given the
   // displacements of every particle (on ranks, of all the ranks' particles).
   bool lists_outdated(const DisplacementsSinceBuild& all) const;

@@ -1,0 +1,43 @@
+#pragma once
+// The motion of rigid bodies (rigid_bodies.hpp) over a step, the counterpart of integrator.hpp's
+// for spheres: velocity Verlet for the centre of mass, and for the rotation the angular momentum
+// kicked by the torque in the space frame for half a step on either side of the free rotation of
+// NO_SQUISH (free_rotation.hpp; Miller et al. 2002). Between the two half kicks the members'
+// forces are summed onto their bodies; after each, the members' positions, velocities and spins
+// follow from their bodies' (a member at arm a from the centre of mass: x + a, v + w x a, w).
+// In a rotating frame the centrifugal, Euler and Coriolis forces act at the centre of mass; their
+// torque about it (from the field's change over the body: of order the body's size over its
+// distance from the axis, ~1e-3 in a centrifuge of 1 m radius with 1 mm grains) is not modelled.
+#include "dem/particles.hpp"
+#include "dem/rigid/rigid_bodies.hpp"
+#include "dem/rotating_frame.hpp"
+#include "dem/vec3.hpp"
+
+namespace trapdem {
+
+struct BodyKick {
+  Vec3 gravity;                     // m/s^2
+  double half = 0.0;                // s, half the step
+  bool rotate = true;               // false: the bodies keep their orientation (freeze_rotation)
+  double spin_retention = 1.0;      // the rolling model's spin damping per step (second half kick)
+  const FrameKick* frame = nullptr;  // a rotating frame's kick at this half step, or none
+};
+
+// The first half kick and the drift over 2 x kick.half: v += h (F/m + g) (in a rotating frame first
+// the Coriolis turn and the frame's acceleration at the centre of mass, as frame_first_half_kick),
+// L += h T, x += 2h v, and the orientation by the free rotation; then the members placed.
+void bodies_first_half_kick_and_drift(RigidBodies& bodies, Particles& particles, const BodyKick& kick);
+
+// Each body's force and torque about its centre of mass from its members' forces and torques:
+// F = sum f_i, T = sum (a_i x f_i + t_i).
+void reduce_member_loads(RigidBodies& bodies, const Particles& particles);
+
+// The second half kick: v += h (F/m + g), L = retention (L + h T) (in a rotating frame then the
+// frame's acceleration at the centre of mass and the Coriolis turn, as FrameSecondHalfKick); the
+// members' velocities and spins follow. Returns 1 when a body's velocity or momentum is not finite.
+int bodies_second_half_kick(RigidBodies& bodies, Particles& particles, const BodyKick& kick);
+
+// The members' positions (when `positions`), velocities and spins from their bodies'.
+void place_members(const RigidBodies& bodies, Particles& particles, bool positions);
+
+}  // namespace trapdem

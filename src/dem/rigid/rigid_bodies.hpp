@@ -1,0 +1,77 @@
+#pragma once
+// Rigid bodies made of member spheres (clumps, issue 39): the bodies' state as a structure of
+// arrays, beside the particles (particles.hpp) that are their members. A member is an ordinary
+// particle for the lists and the force back end (every contact law, walls included); the engine
+// leaves out the pairs of two members of one body, sums the members' forces onto their body and
+// moves the body (body_motion.hpp), and the members with it.
+//
+// In a run with bodies every particle is a member of exactly one body (a lone sphere is a body of
+// one member): the step integrates bodies, not particles. A member particle carries its body's mass
+// (the contact's effective mass, so the dashpot's restitution holds for body-body impacts, as
+// LIGGGHTS's multisphere does) and the inverse of its body's mean principal moment (read only by
+// the rolling models' inertias; shapes stand in for rolling resistance, so clumps are run without it).
+#include <cstddef>
+#include <cstdint>
+#include <vector>
+
+#include "dem/particles.hpp"
+#include "dem/rigid/clump_template.hpp"
+#include "dem/rigid/quaternion.hpp"
+#include "dem/vec3.hpp"
+
+namespace trapdem {
+
+inline constexpr std::uint32_t kNoBody = ~0u;
+
+struct RigidBodies {
+  // Per body.
+  std::vector<std::int64_t> id;             // stable identity
+  std::vector<double> mass;                 // kg
+  std::vector<Vec3> principal_inertia;      // kg m^2, about the body frame's axes (principal ones)
+  std::vector<Vec3> position;               // m, the centre of mass
+  std::vector<Vec3> velocity;               // m/s, of the centre of mass
+  std::vector<Quaternion> orientation;      // body frame to space frame
+  std::vector<Vec3> angular_momentum;       // kg m^2/s, about the centre of mass, space frame
+  std::vector<Vec3> force;                  // N, the members' contact forces summed (gravity not included)
+  std::vector<Vec3> torque;                 // N m, about the centre of mass
+  std::vector<std::uint32_t> first_member{0};  // body b's members: [first_member[b], first_member[b + 1])
+  // Per member, in body order.
+  std::vector<std::int64_t> member_id;  // the member sphere's particle id
+  std::vector<Vec3> member_offset;      // m, its centre in the body frame
+
+  // Derived, not state: where each member is in the particle arrays and each particle's body
+  // (kNoBody when it has none), after every re-ordering of the particles (locate_members).
+  std::vector<std::uint32_t> member_particle;
+  std::vector<std::uint32_t> body_of_particle;
+
+  std::size_t size() const { return id.size(); }
+  bool empty() const { return id.empty(); }
+  std::size_t member_count() const { return member_id.size(); }
+
+  Vec3 angular_velocity(std::size_t b) const;  // rad/s, space frame
+  // m, from body b's centre of mass to its member m's centre, space frame.
+  Vec3 member_arm(std::size_t b, std::size_t m) const { return rotate(orientation[b], member_offset[m]); }
+  std::size_t body_of_member(std::size_t member) const;  // binary search (tools, tests)
+
+  // Finds each member among `particle_id` (the particles' ids, in their current order). Throws
+  // SimulationError when a member is missing or a particle belongs to no body.
+  void locate_members(const std::vector<std::int64_t>& particle_id);
+
+  void clear();
+};
+
+// Appends a body of `shape` (a template scaled to its size, clump_template.hpp) of solid density
+// `density` (kg/m^3) with its centre of mass at `position`, orientation `orientation`, velocity and
+// angular velocity (space frame), and its members as particles with ids first_member_id, +1, ...
+// Returns the body's index. The members' positions and velocities follow from the body's.
+std::size_t add_rigid_body(RigidBodies& bodies, Particles& particles, std::int64_t body_id,
+                           std::int64_t first_member_id, const ClumpTemplate& shape, double density,
+                           const Vec3& position, const Quaternion& orientation, const Vec3& velocity = {},
+                           const Vec3& angular_velocity = {});
+
+// Removes the pairs of two members of one body from a half list (pair_list.hpp) whose particles'
+// bodies `body_of_particle` gives: a body's members do not touch each other.
+struct PairList;
+void exclude_pairs_within_bodies(PairList& pairs, const std::vector<std::uint32_t>& body_of_particle);
+
+}  // namespace trapdem
