@@ -1,5 +1,6 @@
 #include <algorithm>
 #include <cmath>
+#include <numeric>
 #include <string>
 #include <vector>
 
@@ -136,6 +137,14 @@ double Simulation::potential_energy(double reference_height) const {
     }
   }
   return global_sum(e);
+}
+
+double Simulation::total_mass() const {
+  const RigidBodies& bodies = state_.bodies;
+  if (!bodies.empty()) return std::accumulate(bodies.mass.begin(), bodies.mass.end(), 0.0);
+  double m = 0.0;
+  for (std::size_t i = 0; i < owned_count(); ++i) m += state_.particles.mass[i];
+  return global_sum(m);
 }
 
 std::size_t Simulation::contact_count() const {

@@ -192,10 +192,8 @@ double Simulation::critical_time_step() const {
   double t = std::numeric_limits<double>::infinity();
   const RigidBodies& bodies = state_.bodies;
   if (!bodies.empty()) {
-    // A contact force on a member turns its body too: at arm l from the centre of mass a spring k
-    // acting on the body's least moment I_min has the period of a mass I_min / l^2 (a torsional
-    // oscillator, T = 2 pi sqrt(I / (k l^2))). The time scale of each member's contacts is that of
-    // the smaller of the body's mass and this, l the farthest reach of a member's surface.
+    // A contact force on a member turns its body too (contact_time_scale_mass), at most at the
+    // farthest reach of a member's surface.
     for (std::size_t b = 0; b < bodies.size(); ++b) {
       double reach = 0.0, smallest_radius = std::numeric_limits<double>::infinity();
       for (std::uint32_t m = bodies.first_member[b]; m < bodies.first_member[b + 1]; ++m) {
@@ -203,9 +201,7 @@ double Simulation::critical_time_step() const {
         reach = std::max(reach, norm(bodies.member_offset[m]) + r);
         smallest_radius = std::min(smallest_radius, r);
       }
-      const Vec3& inertia = bodies.principal_inertia[b];
-      const double least = std::min({inertia.x, inertia.y, inertia.z});
-      const double mass = std::min(bodies.mass[b], least / (reach * reach));
+      const double mass = contact_time_scale_mass(bodies.mass[b], bodies.principal_inertia[b], reach);
       t = std::min(t, trapdem::critical_time_step(law_, wall_laws, mass, smallest_radius));
     }
     return t;

@@ -163,6 +163,7 @@ class Simulation {
   // line through the axis point along z (the height above the base when z is the model's vertical).
   double potential_energy(double reference_height = 0.0) const;
   std::size_t contact_count() const;            // touching particle pairs
+  double total_mass() const;                    // kg, of the particles, or of the bodies when there are
   double max_overlap_fraction() const { return max_overlap_seen_; }
 
  private:

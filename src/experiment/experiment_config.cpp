@@ -9,6 +9,7 @@
 #include <fmt/format.h>
 
 #include "core/thread_count.hpp"
+#include "dem/rigid/rigid_bodies.hpp"
 #include "experiment/centrifuge_frame.hpp"
 #include "experiment/packing_input.hpp"
 #include "io/config.hpp"
@@ -358,6 +359,15 @@ ExperimentConfig ExperimentConfig::from(Config& c) {
   Config particles = c.get_table("particles");
   e.material.density = read_density(particles, e.material.density);
   e.material.sizes = read_sizes(particles);
+  Config shape = particles.get_table("shape");
+  e.material.shape = read_particle_shape(shape);
+  if (e.material.shape.is_clump()) {
+    if (e.box.periodic_depth)
+      shape.fail("kind", "spheres with box.depth_boundary = \"periodic\" (clumps need walls on every side: a "
+                         "clump's members would straddle the periodic boundary)");
+    if (c.has("packing"))
+      shape.fail("kind", "spheres with a [packing] (a packing is read as spheres; pour the clumps instead)");
+  }
   if (e.material.sizes.max_diameter() * 3.0 > e.box.depth && !e.box.periodic_depth) {
     const char* size_key = particles.has("grading") ? "grading" : (particles.has("max_diameter") ? "max_diameter" : "diameter");
     particles.fail(size_key, fmt::format("particles at most a third of the box depth ({} m)", e.box.depth));
@@ -495,6 +505,12 @@ std::vector<const ContactLaw*> MaterialConfig::wall_laws() const { return {&base
 
 double ExperimentConfig::critical_time_step() const {
   if (packing.particles) return packing.critical_time_step;
+  if (material.shape.is_clump()) {  // as Simulation::critical_time_step for the smallest grain
+    const ClumpTemplate grain = material.shape.clump->scaled_to(material.sizes.min_diameter());
+    const double mass = contact_time_scale_mass(material.density * grain.volume,
+                                                material.density * grain.principal_inertia, grain.bounding_radius());
+    return trapdem::critical_time_step(material.particle, material.wall_laws(), mass, grain.smallest_radius());
+  }
   const double r = 0.5 * material.sizes.min_diameter();
   const double m_min = material.density * 4.0 / 3.0 * std::numbers::pi * r * r * r;
   return trapdem::critical_time_step(material.particle, material.wall_laws(), m_min, r);

@@ -9,6 +9,7 @@
 #include "dem/contact_law.hpp"
 #include "dem/particles.hpp"
 #include "dem/vec3.hpp"
+#include "experiment/particle_shape.hpp"
 #include "experiment/size_distribution.hpp"
 
 namespace trapdem {
@@ -32,7 +33,8 @@ struct TrapdoorConfig {
 
 struct MaterialConfig {
   double density = 2500.0;     // kg/m^3 of the solid
-  SizeDistribution sizes = SizeDistribution::single(0.002);
+  SizeDistribution sizes = SizeDistribution::single(0.002);  // of the volume-equivalent diameter
+  ParticleShape shape;         // [particles.shape]: spheres, or rigid clumps (particle_shape.hpp)
   ContactLaw particle;         // particle-particle (Table 2)
   ContactLaw base;             // particle against the base, trapdoor, cavity and side walls
   ContactLaw front;            // particle against the front window (glass)

@@ -64,6 +64,8 @@ void describe_run(RunLog& recorder, const ExperimentConfig& c, const fs::path& o
                            c.trapdoor.centre * 1e3, c.trapdoor.travel * 1e3, c.trapdoor.rate));
   recorder.say(fmt::format("  particles: {}, density {} kg/m3, about {} of them; contact law {}", c.material.sizes.describe(),
                            c.material.density, c.expected_particle_count(), describe_law(c.material.particle)));
+  if (c.material.shape.is_clump())
+    recorder.say(fmt::format("  shape: {}; sizes are volume-equivalent diameters", c.material.shape.describe()));
   for (const std::string& key : c.material.unread_parameters)
     recorder.say(fmt::format("  note: {} is given but not read by its contact law", key));
   recorder.say(fmt::format("  time step {:.4g} s ({:.3g} of the critical {:.4g} s), skin {:.3g} mm, {} g, {}",

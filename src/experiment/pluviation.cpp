@@ -15,7 +15,8 @@ namespace trapdem {
 Hopper::Hopper(const ExperimentConfig& c) : config_(&c) {
   const double g = ExperimentConfig::standard_gravity;
   entry_speed_ = std::sqrt(2.0 * g * c.pluviation.drop_height);
-  spacing_ = 1.1 * c.material.sizes.max_diameter();
+  // Room for the largest grain in any orientation (a clump's bounding sphere).
+  spacing_ = 1.1 * c.material.sizes.max_diameter() * c.material.shape.bounding_ratio();
   // The time for a layer to fall one spacing: s = v t + g t^2 / 2.
   interval_ = (-entry_speed_ + std::sqrt(entry_speed_ * entry_speed_ + 2.0 * g * spacing_)) / g;
 }
@@ -81,7 +82,7 @@ std::size_t Hopper::pour(Simulation& sim, Decomposition* ranks) {
   // Particles already near the band (bouncing back up from the deposit, or the last layer not yet
   // clear): a site that would overlap one of them is skipped in this insertion. Each rank looks at
   // its own particles; a site is free when it is free on every rank.
-  const double d_max = c.material.sizes.max_diameter();
+  const double d_max = c.material.sizes.max_diameter() * c.material.shape.bounding_ratio();
   std::vector<std::size_t> nearby;
   for (std::size_t i = 0; i < owned; ++i)
     if (std::fabs(p.position[i].z - z) < 2.0 * d_max) nearby.push_back(i);
@@ -104,6 +105,9 @@ std::size_t Hopper::pour(Simulation& sim, Decomposition* ranks) {
   constexpr std::size_t kChunk = 256;
   std::vector<double> diameter, site_blocked;
   std::vector<Vec3> site_x;
+  std::vector<Quaternion> site_q;  // clumps: each site's orientation, drawn uniformly
+  const ParticleShape& shape = c.material.shape;
+  std::uniform_real_distribution<double> unit(0.0, 1.0);
   std::size_t count = 0;
   bool stop = false;  // the count, the fill height or the flow's budget says: no more now
   for (std::size_t first = 0; first < sites.size() && !stop; first += kChunk) {
@@ -111,6 +115,7 @@ std::size_t Hopper::pour(Simulation& sim, Decomposition* ranks) {
     diameter.clear();
     site_x.clear();
     site_blocked.clear();
+    site_q.clear();
     for (std::size_t k = first; k < last; ++k) {
       const double d = c.material.sizes.sample(rng);
       const int ix = sites[k] % nx, iy = sites[k] / nx;
@@ -119,7 +124,11 @@ std::size_t Hopper::pour(Simulation& sim, Decomposition* ranks) {
                    z + jitter(rng) * spacing_};
       diameter.push_back(d);
       site_x.push_back(x);
-      site_blocked.push_back(blocked(x, 0.5 * d));
+      site_blocked.push_back(blocked(x, 0.5 * d * shape.bounding_ratio()));
+      if (shape.is_clump()) {
+        const double u1 = unit(rng), u2 = unit(rng), u3 = unit(rng);
+        site_q.push_back(uniform_orientation(u1, u2, u3));
+      }
     }
     if (ranks) ranks->max(site_blocked.data(), int(site_blocked.size()));
     for (std::size_t k = 0; k < diameter.size(); ++k) {
@@ -132,7 +141,14 @@ std::size_t Hopper::pour(Simulation& sim, Decomposition* ranks) {
       if (stop) break;
       if (site_blocked[k] > 0.0) continue;
       const std::int64_t id = inserted_ + 1;
-      if (sim.owns_site(site_x[k])) sim.add_particle(id, site_x[k], 0.5 * d, density, Vec3{0.0, 0.0, -entry_speed_});
+      const Vec3 fall{0.0, 0.0, -entry_speed_};
+      if (shape.is_clump()) {  // one process only (TrapdoorExperiment::attach_decomposition)
+        const ClumpTemplate grain = shape.clump->scaled_to(d);
+        sim.add_body(id, next_member_id_, grain, density, site_x[k], site_q[k], fall);
+        next_member_id_ += std::int64_t(grain.members.size());
+      } else if (sim.owns_site(site_x[k])) {
+        sim.add_particle(id, site_x[k], 0.5 * d, density, fall);
+      }
       if (c.pluviation.flow_rate > 0.0) mass_budget_ -= mass;
       inserted_mass_ += mass;
       ++inserted_;
@@ -167,6 +183,7 @@ std::map<std::string, std::string> Hopper::state() const {
           {"hopper.inserted_mass", hex(inserted_mass_)},
           {"hopper.event", fmt::to_string(event_)},
           {"hopper.inserted", fmt::to_string(inserted_)},
+          {"hopper.next_member_id", fmt::to_string(next_member_id_)},
           {"hopper.band_limited", band_limited_ ? "1" : "0"},
           {"hopper.stalled_insertions", fmt::to_string(stalled_insertions_)},
           {"hopper.box_full", box_full_ ? "1" : "0"}};
@@ -184,6 +201,9 @@ void Hopper::restore(const std::map<std::string, std::string>& s) {
   inserted_mass_ = dbl("hopper.inserted_mass");
   event_ = std::stoll(get("hopper.event"));
   inserted_ = std::stoll(get("hopper.inserted"));
+  // Absent from a checkpoint written before clumps: spheres, no member ids.
+  const auto member = s.find("hopper.next_member_id");
+  next_member_id_ = member == s.end() ? 1 : std::stoll(member->second);
   band_limited_ = get("hopper.band_limited") == "1";
   // Absent from a checkpoint written before the box-full rule: no stall counted yet, not full.
   const auto stalled = s.find("hopper.stalled_insertions"), full = s.find("hopper.box_full");

@@ -53,7 +53,8 @@ class Hopper {
   double next_time_ = 0.0;        // s
   double mass_budget_ = 0.0;      // kg allowed by the flow rate and not yet poured
   std::int64_t event_ = 0;
-  std::int64_t inserted_ = 0;
+  std::int64_t inserted_ = 0;     // grains: particles, or clumps (each a body of member spheres)
+  std::int64_t next_member_id_ = 1;  // the particle id of the next clump's first member sphere
   double inserted_mass_ = 0.0;
   bool band_limited_ = false;
   // A stalled insertion: at the ceiling, fewer than 1 / kStarvedSiteFraction of the sites free while

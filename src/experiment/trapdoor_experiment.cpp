@@ -70,6 +70,10 @@ TrapdoorExperiment::TrapdoorExperiment(ExperimentConfig config) : config_(std::m
 }
 
 void TrapdoorExperiment::attach_decomposition(std::unique_ptr<Decomposition> decomposition) {
+  if (decomposition && config_.material.shape.is_clump())
+    throw InputError(fmt::format("particles.shape.kind = \"{}\": clumps run on one process (a clump's member spheres "
+                                 "would cross ranks; docs/ARCHITECTURE.md, \"Clumps\"); run without --ranks",
+                                 config_.material.shape.kind));
   decomposition_ = decomposition.get();
   sim_->set_decomposition(std::move(decomposition));
 }

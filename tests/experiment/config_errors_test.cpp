@@ -264,6 +264,42 @@ const std::vector<BadConfig>& cases() {
        "[spin_up]\n"
        "g_level = 0.5\n",
        4, "spin_up.g_level", "expected a number in [1, 1000] (g)"},
+      // [particles.shape] (issue 39): each kind reads its own keys.
+      {"ShapeKeyOfAnotherKind",
+       "[particles.shape]\n"
+       "kind = \"dimer\"\n"
+       "satellites = 6\n"
+       "[pluviation]\n"
+       "count = 100\n",
+       3, "particles.shape.satellites", "no satellites with kind = \"dimer\" (read only with kind = \"sub_angular\")"},
+      {"ShapeUnknownKind",
+       "[particles.shape]\n"
+       "kind = \"cube\"\n"
+       "[pluviation]\n"
+       "count = 100\n",
+       2, "particles.shape.kind", "expected one of"},
+      {"DimerOfTwoTouchingSpheres",
+       "[particles.shape]\n"
+       "kind = \"dimer\"\n"
+       "aspect = 2.0\n"
+       "[pluviation]\n"
+       "count = 100\n",
+       3, "particles.shape.aspect", "expected a number in [1, 2)"},
+      {"ShapeTemplateFileMissing",
+       "[particles.shape]\n"
+       "kind = \"file\"\n"
+       "file = \"no-such-template.txt\"\n"
+       "[pluviation]\n"
+       "count = 100\n",
+       3, "particles.shape.file", "cannot open the clump template"},
+      {"ClumpsAcrossAPeriodicDepth",
+       "[box]\n"
+       "depth_boundary = \"periodic\"\n"
+       "[particles.shape]\n"
+       "kind = \"tetrahedral\"\n"
+       "[pluviation]\n"
+       "count = 100\n",
+       4, "particles.shape.kind", "spheres with box.depth_boundary = \"periodic\""},
       // An override names itself instead of a file line.
       {"OverrideOutOfRange",
        "[pluviation]\n"

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <limits>
 #include <numbers>
 
 #include <fmt/format.h>
@@ -96,6 +97,18 @@ void check_members(const std::vector<ClumpMember>& members, const std::string& s
 }  // namespace
 
 double ClumpTemplate::volume_equivalent_diameter() const { return std::cbrt(6.0 * volume / std::numbers::pi); }
+
+double ClumpTemplate::bounding_radius() const {
+  double reach = 0.0;
+  for (const ClumpMember& m : members) reach = std::max(reach, norm(m.centre) + m.radius);
+  return reach;
+}
+
+double ClumpTemplate::smallest_radius() const {
+  double r = std::numeric_limits<double>::infinity();
+  for (const ClumpMember& m : members) r = std::min(r, m.radius);
+  return r;
+}
 
 ClumpTemplate ClumpTemplate::scaled_to(double diameter) const {
   const double s = diameter / volume_equivalent_diameter();

@@ -30,6 +30,8 @@ struct ClumpTemplate {
   Vec3 reference_axes_x, reference_axes_y, reference_axes_z;  // the principal axes in the input frame
 
   double volume_equivalent_diameter() const;  // m: the sphere of the union's volume
+  double bounding_radius() const;   // m, from the centre of mass to the farthest point of a member
+  double smallest_radius() const;   // m, of the smallest member
   // This shape scaled to a volume-equivalent diameter (m): members, volume and inertia.
   ClumpTemplate scaled_to(double volume_equivalent_diameter) const;
 };

@@ -17,6 +17,14 @@ struct Quaternion {
   }
 };
 
+// A rotation drawn uniformly over all orientations from three numbers uniform in [0, 1)
+// (Shoemake 1992, "Uniform random rotations", Graphics Gems III, p. 124).
+inline Quaternion uniform_orientation(double u1, double u2, double u3) {
+  constexpr double kTwoPi = 6.283185307179586;
+  const double a = std::sqrt(1.0 - u1), b = std::sqrt(u1);
+  return {b * std::cos(kTwoPi * u3), a * std::sin(kTwoPi * u2), a * std::cos(kTwoPi * u2), b * std::sin(kTwoPi * u3)};
+}
+
 constexpr Quaternion operator*(const Quaternion& a, const Quaternion& b) {
   return {a.w * b.w - a.x * b.x - a.y * b.y - a.z * b.z, a.w * b.x + a.x * b.w + a.y * b.z - a.z * b.y,
           a.w * b.y - a.x * b.z + a.y * b.w + a.z * b.x, a.w * b.z + a.x * b.y - a.y * b.x + a.z * b.w};

@@ -80,9 +80,18 @@ std::size_t add_rigid_body(RigidBodies& bodies, Particles& particles, std::int64
     particles.inv_inertia[i] = mean_inverse_inertia;
     bodies.member_id.push_back(first_member_id + std::int64_t(k));
     bodies.member_offset.push_back(member.centre);
+    // Appended: the derived arrays stay current without a search (a pour adds bodies between steps).
+    bodies.member_particle.push_back(std::uint32_t(i));
+    bodies.body_of_particle.resize(particles.size(), kNoBody);
+    bodies.body_of_particle[i] = std::uint32_t(bodies.size() - 1);
   }
   bodies.first_member.push_back(std::uint32_t(bodies.member_id.size()));
   return bodies.size() - 1;
+}
+
+double contact_time_scale_mass(double mass, const Vec3& inertia, double reach) {
+  const double least = std::min({inertia.x, inertia.y, inertia.z});
+  return std::min(mass, least / (reach * reach));
 }
 
 void exclude_pairs_within_bodies(PairList& pairs, const std::vector<std::uint32_t>& body_of_particle) {

@@ -63,11 +63,18 @@ struct RigidBodies {
 // Appends a body of `shape` (a template scaled to its size, clump_template.hpp) of solid density
 // `density` (kg/m^3) with its centre of mass at `position`, orientation `orientation`, velocity and
 // angular velocity (space frame), and its members as particles with ids first_member_id, +1, ...
-// Returns the body's index. The members' positions and velocities follow from the body's.
+// Returns the body's index. The members' positions and velocities follow from the body's. The
+// derived arrays are extended for the appended members (current if they were).
 std::size_t add_rigid_body(RigidBodies& bodies, Particles& particles, std::int64_t body_id,
                            std::int64_t first_member_id, const ClumpTemplate& shape, double density,
                            const Vec3& position, const Quaternion& orientation, const Vec3& velocity = {},
                            const Vec3& angular_velocity = {});
+
+// kg, the mass that sets the time scale of a body's contacts (the critical step): a contact force
+// at arm `reach` (m) from the centre of mass turns the body about its least principal moment
+// I_min (kg m^2) like a mass I_min / reach^2 on the spring (a torsional oscillator,
+// T = 2 pi sqrt(I / (k reach^2))); the smaller of that and the body's mass.
+double contact_time_scale_mass(double mass, const Vec3& principal_inertia, double reach);
 
 // Removes the pairs of two members of one body from a half list (pair_list.hpp) whose particles'
 // bodies `body_of_particle` gives: a body's members do not touch each other.
