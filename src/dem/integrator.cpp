@@ -17,9 +17,6 @@ double DisplacementsSinceBuild::pair_bound() const {
   return std::min(2.0 * std::sqrt(max_length2), std::sqrt(diagonal2));
 }
 
-namespace {
-
-// Bounds of the escape check: the domain's, none on periodic axes.
 void escape_bounds(const Domain& domain, Vec3& lo, Vec3& hi) {
   lo = domain.lower;
   hi = domain.upper;
@@ -30,8 +27,6 @@ void escape_bounds(const Domain& domain, Vec3& lo, Vec3& hi) {
     }
   }
 }
-
-}  // namespace
 
 DriftReport first_half_kick_and_drift(Particles& p, std::size_t n, const Vec3* position_at_build, const Vec3& gravity, double dt,
                                       const Domain& domain, bool rotate) {
@@ -79,36 +74,6 @@ DriftReport first_half_kick_and_drift(Particles& p, std::size_t n, const Vec3* p
   for (std::size_t i = 0; outside && i < n; ++i) {
     const bool inside = x[i].x >= lo.x && x[i].x <= hi.x && x[i].y >= lo.y && x[i].y <= hi.y && x[i].z >= lo.z &&
                         x[i].z <= hi.z;
-    if (!inside) {
-      report.escaped = std::int64_t(i);
-      break;
-    }
-  }
-  return report;
-}
-
-DriftReport measure_drift(const std::vector<Vec3>& x, std::size_t n, const Vec3* position_at_build,
-                          const Domain& domain) {
-  Vec3 lo, hi;
-  escape_bounds(domain, lo, hi);
-  DriftReport report;
-  DisplacementsSinceBuild& d = report.displacements;
-  if (position_at_build != nullptr && n > 0) {
-    constexpr double kHuge = std::numeric_limits<double>::infinity();
-    d.lowest = {kHuge, kHuge, kHuge};
-    d.highest = {-kHuge, -kHuge, -kHuge};
-    for (std::size_t i = 0; i < n; ++i) {
-      const Vec3 step = x[i] - position_at_build[i];
-      d.max_length2 = std::max(d.max_length2, norm2(step));
-      for (int a = 0; a < 3; ++a) {
-        d.lowest[a] = std::min(d.lowest[a], step[a]);
-        d.highest[a] = std::max(d.highest[a], step[a]);
-      }
-    }
-  }
-  for (std::size_t i = 0; i < n; ++i) {
-    const bool inside = x[i].x >= lo.x && x[i].x <= hi.x && x[i].y >= lo.y && x[i].y <= hi.y && x[i].z >= lo.z &&
-                        x[i].z <= hi.z;  // false for NaN too
     if (!inside) {
       report.escaped = std::int64_t(i);
       break;

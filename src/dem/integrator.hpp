@@ -37,10 +37,8 @@ struct DriftReport {
 DriftReport first_half_kick_and_drift(Particles& p, std::size_t n, const Vec3* position_at_build, const Vec3& gravity, double dt,
                                       const Domain& domain, bool rotate);
 
-// The displacements since the last build and the escape check of first_half_kick_and_drift for
-// positions moved some other way (the members of rigid bodies, body_motion.hpp): the first n of x.
-DriftReport measure_drift(const std::vector<Vec3>& x, std::size_t n, const Vec3* position_at_build,
-                          const Domain& domain);
+// The bounds of the escape check: the domain's, none (infinite) on periodic axes.
+void escape_bounds(const Domain& domain, Vec3& lo, Vec3& hi);
 
 // Each wall moves by its prescribed velocity at the middle of the step [time, time + dt].
 void move_walls(std::vector<Wall>& walls, double time, double dt);

@@ -229,6 +229,7 @@ void Simulation::step() {
   const bool with_bodies = !state_.bodies.empty();
   const bool fused_kick = backend_->fuses_second_half_kick() && !decomposition_ && !frame_ && !with_bodies;
   if (!setup_done_) {  // forces of the initial state, so the first half kick sees them
+    if (with_bodies) place_members(state_.bodies, state_.particles, true);
     rebuild_lists_agreed();
     forces(false);
     if (with_bodies) reduce_member_loads(state_.bodies, state_.particles);
@@ -339,9 +340,9 @@ void Simulation::integrate_positions() {
   if (!state_.bodies.empty()) {
     const std::optional<FrameKick> frame =
         frame_ ? std::optional<FrameKick>(FrameKick(*frame_, time_, 0.5 * dt_)) : std::nullopt;
-    bodies_first_half_kick_and_drift(state_.bodies, p, body_kick(frame ? &*frame : nullptr));
-    const DriftReport drift = measure_drift(p.position, p.size(), track ? state_.lists.position_at_build.data() : nullptr,
-                                            settings_.domain);
+    const DriftReport drift = bodies_first_half_kick_and_drift(
+        state_.bodies, p, body_kick(frame ? &*frame : nullptr),
+        track ? state_.lists.position_at_build.data() : nullptr, settings_.domain);
     displacements_ = drift.displacements;
     escaped_particle_ = drift.escaped;
     move_walls(state_.walls, time_, dt_);
@@ -463,6 +464,7 @@ void Simulation::restore(double time, const SimulationStats& stats, ListState li
   rebuilds_since_reorder_ = lists.rebuilds_since_reorder;
   if (!state_.bodies.empty()) {  // the particles are in the checkpoint's order; their forces, the checkpoint's
     state_.bodies.locate_members(state_.particles.id);
+    place_members(state_.bodies, state_.particles, true);  // the same bits: placed by the same formula
     reduce_member_loads(state_.bodies, state_.particles);
   }
   compact_pair_history();
@@ -492,6 +494,7 @@ void Simulation::resume_from_histories(double time, const SimulationStats& stats
   }
   if (!state_.bodies.empty()) {
     state_.bodies.locate_members(state_.particles.id);
+    place_members(state_.bodies, state_.particles, true);
     reduce_member_loads(state_.bodies, state_.particles);
   }
   pending_history_ = std::move(histories);

@@ -1,17 +1,57 @@
 #include "dem/rigid/body_motion.hpp"
 
+#include <algorithm>
+#include <limits>
+#include <stdexcept>
+
 #include "dem/rigid/free_rotation.hpp"
 
 namespace trapdem {
 
-void place_members(const RigidBodies& bodies, Particles& particles, bool positions) {
+namespace {
+
+// The rotation matrix of a unit quaternion, by rows: one matrix per body instead of a quaternion
+// product per member.
+struct Rotation {
+  Vec3 row0, row1, row2;
+  explicit Rotation(const Quaternion& q) {
+    const double w = q.w, x = q.x, y = q.y, z = q.z;
+    row0 = {1.0 - 2.0 * (y * y + z * z), 2.0 * (x * y - w * z), 2.0 * (x * z + w * y)};
+    row1 = {2.0 * (x * y + w * z), 1.0 - 2.0 * (x * x + z * z), 2.0 * (y * z - w * x)};
+    row2 = {2.0 * (x * z - w * y), 2.0 * (y * z + w * x), 1.0 - 2.0 * (x * x + y * y)};
+  }
+  Vec3 operator()(const Vec3& v) const { return {dot(row0, v), dot(row1, v), dot(row2, v)}; }
+  Vec3 transposed(const Vec3& v) const {  // the inverse rotation
+    return row0 * v.x + row1 * v.y + row2 * v.z;
+  }
+};
+
+// Body b's angular velocity w = R I^-1 R^T L (space frame).
+Vec3 spin_of(const RigidBodies& bodies, std::size_t b, const Rotation& r) {
+  const Vec3 l = r.transposed(bodies.angular_momentum[b]);
+  const Vec3& inertia = bodies.principal_inertia[b];
+  return r(Vec3{l.x / inertia.x, l.y / inertia.y, l.z / inertia.z});
+}
+
+void size_workspaces(RigidBodies& bodies) {
+  bodies.arm.resize(bodies.member_count());
+  bodies.spin.resize(bodies.size());
+}
+
+}  // namespace
+
+void place_members(RigidBodies& bodies, Particles& particles, bool positions) {
+  size_workspaces(bodies);
   const std::size_t n = bodies.size();
 #pragma omp parallel for schedule(static)
   for (std::size_t b = 0; b < n; ++b) {
-    const Vec3 w = bodies.angular_velocity(b);
+    const Rotation r(bodies.orientation[b]);
+    const Vec3 w = spin_of(bodies, b, r);
+    bodies.spin[b] = w;
     for (std::uint32_t m = bodies.first_member[b]; m < bodies.first_member[b + 1]; ++m) {
       const std::uint32_t i = bodies.member_particle[m];
-      const Vec3 arm = bodies.member_arm(b, m);
+      const Vec3 arm = positions ? r(bodies.member_offset[m]) : bodies.arm[m];
+      bodies.arm[m] = arm;
       if (positions) particles.position[i] = bodies.position[b] + arm;
       particles.velocity[i] = bodies.velocity[b] + cross(w, arm);
       particles.angular_velocity[i] = w;
@@ -19,27 +59,73 @@ void place_members(const RigidBodies& bodies, Particles& particles, bool positio
   }
 }
 
-void bodies_first_half_kick_and_drift(RigidBodies& bodies, Particles& particles, const BodyKick& kick) {
+DriftReport bodies_first_half_kick_and_drift(RigidBodies& bodies, Particles& particles, const BodyKick& kick,
+                                             const Vec3* position_at_build, const Domain& domain) {
+  size_workspaces(bodies);
   const std::size_t n = bodies.size();
   const double h = kick.half, dt = 2.0 * kick.half;
-#pragma omp parallel for schedule(static)
+  Vec3 lo, hi;
+  escape_bounds(domain, lo, hi);
+  const bool track = position_at_build != nullptr;
+  constexpr double kHuge = std::numeric_limits<double>::infinity();
+  double max_d2 = 0.0, lo_x = kHuge, lo_y = kHuge, lo_z = kHuge, hi_x = -kHuge, hi_y = -kHuge, hi_z = -kHuge;
+  int outside = 0;
+#pragma omp parallel for schedule(static) reduction(max : max_d2, hi_x, hi_y, hi_z) \
+    reduction(min : lo_x, lo_y, lo_z) reduction(| : outside)
   for (std::size_t b = 0; b < n; ++b) {
     Vec3& v = bodies.velocity[b];
     if (kick.frame) v = kick.frame->coriolis_turn(v) + h * kick.frame->acceleration(bodies.position[b]);
     v += h * (bodies.force[b] / bodies.mass[b] + kick.gravity);
     bodies.position[b] += dt * v;
-    if (!kick.rotate) continue;
-    Vec3& L = bodies.angular_momentum[b];
-    L += h * bodies.torque[b];
-    // The free rotation keeps L in the space frame; only the orientation changes (and L's
-    // body-frame components, which are not stored).
-    Vec3 momentum_body = rotate_inverse(bodies.orientation[b], L);
-    rotate_freely(bodies.orientation[b], momentum_body, bodies.principal_inertia[b], dt);
+    if (kick.rotate) {
+      Vec3& L = bodies.angular_momentum[b];
+      L += h * bodies.torque[b];
+      // The free rotation keeps L in the space frame; only the orientation changes (and L's
+      // body-frame components, which are not stored).
+      Vec3 momentum_body = rotate_inverse(bodies.orientation[b], L);
+      rotate_freely(bodies.orientation[b], momentum_body, bodies.principal_inertia[b], dt);
+    }
+    // The members placed, with the rebuild criterion's displacements and the escape check.
+    const Rotation r(bodies.orientation[b]);
+    const Vec3 w = spin_of(bodies, b, r);
+    bodies.spin[b] = w;
+    for (std::uint32_t m = bodies.first_member[b]; m < bodies.first_member[b + 1]; ++m) {
+      const std::uint32_t i = bodies.member_particle[m];
+      const Vec3 arm = r(bodies.member_offset[m]);
+      bodies.arm[m] = arm;
+      const Vec3 x = bodies.position[b] + arm;
+      particles.position[i] = x;
+      particles.velocity[i] = v + cross(w, arm);
+      particles.angular_velocity[i] = w;
+      if (track) {
+        const Vec3 d = x - position_at_build[i];
+        max_d2 = std::max(max_d2, norm2(d));
+        lo_x = std::min(lo_x, d.x);
+        lo_y = std::min(lo_y, d.y);
+        lo_z = std::min(lo_z, d.z);
+        hi_x = std::max(hi_x, d.x);
+        hi_y = std::max(hi_y, d.y);
+        hi_z = std::max(hi_z, d.z);
+      }
+      const bool inside = x.x >= lo.x && x.x <= hi.x && x.y >= lo.y && x.y <= hi.y && x.z >= lo.z && x.z <= hi.z;
+      outside |= inside ? 0 : 1;  // false for NaN too
+    }
   }
-  place_members(bodies, particles, true);
+  DriftReport report;
+  if (track && n > 0) report.displacements = {max_d2, {lo_x, lo_y, lo_z}, {hi_x, hi_y, hi_z}};
+  for (std::size_t i = 0; outside && i < particles.size(); ++i) {
+    const Vec3& x = particles.position[i];
+    if (!(x.x >= lo.x && x.x <= hi.x && x.y >= lo.y && x.y <= hi.y && x.z >= lo.z && x.z <= hi.z)) {
+      report.escaped = std::int64_t(i);
+      break;
+    }
+  }
+  return report;
 }
 
 void reduce_member_loads(RigidBodies& bodies, const Particles& particles) {
+  if (bodies.arm.size() != bodies.member_count())
+    throw std::logic_error("reduce_member_loads: the members' arms are not current (place_members first)");
   const std::size_t n = bodies.size();
 #pragma omp parallel for schedule(static)
   for (std::size_t b = 0; b < n; ++b) {
@@ -47,7 +133,7 @@ void reduce_member_loads(RigidBodies& bodies, const Particles& particles) {
     for (std::uint32_t m = bodies.first_member[b]; m < bodies.first_member[b + 1]; ++m) {
       const std::uint32_t i = bodies.member_particle[m];
       f += particles.force[i];
-      t += cross(bodies.member_arm(b, m), particles.force[i]) + particles.torque[i];
+      t += cross(bodies.arm[m], particles.force[i]) + particles.torque[i];
     }
     bodies.force[b] = f;
     bodies.torque[b] = t;
@@ -66,8 +152,16 @@ int bodies_second_half_kick(RigidBodies& bodies, Particles& particles, const Bod
     Vec3& L = bodies.angular_momentum[b];
     if (kick.rotate) L = (L + h * bodies.torque[b]) * kick.spin_retention;
     any_bad |= is_finite(v) && is_finite(L) ? 0 : 1;
+    // The members' velocities and spins (their arms are this step's: the kick turns no body).
+    const Rotation r(bodies.orientation[b]);
+    const Vec3 w = spin_of(bodies, b, r);
+    bodies.spin[b] = w;
+    for (std::uint32_t m = bodies.first_member[b]; m < bodies.first_member[b + 1]; ++m) {
+      const std::uint32_t i = bodies.member_particle[m];
+      particles.velocity[i] = v + cross(w, bodies.arm[m]);
+      particles.angular_velocity[i] = w;
+    }
   }
-  place_members(bodies, particles, false);
   return any_bad;
 }
 

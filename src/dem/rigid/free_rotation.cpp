@@ -1,19 +1,49 @@
 #include "dem/rigid/free_rotation.hpp"
 
+#include <cmath>
+
 namespace trapdem {
 
 namespace {
 
+// sin and cos of a sub-rotation's angle. A step turns a grain by w dt ~ 1e-5 rad, where the Taylor
+// series to the 7th (sin) and 8th (cos) power are exact in double precision (the first term left
+// out is below 3e-22 of the result for |t| < 0.01) at a fraction of the cost of sincos, which took a
+// quarter of a clump bed's step; beyond 0.01 rad, the library's.
+void step_sincos(double t, double& s, double& c) {
+  if (std::abs(t) < 1e-2) {
+    // Multiplications by the reciprocals (a division each would cost as much as the rest).
+    constexpr double k6 = 1.0 / 6.0, k20 = 1.0 / 20.0, k42 = 1.0 / 42.0;
+    constexpr double k12 = 1.0 / 12.0, k30 = 1.0 / 30.0, k56 = 1.0 / 56.0;
+    const double t2 = t * t;
+    s = t * (1.0 - t2 * k6 * (1.0 - t2 * k20 * (1.0 - t2 * k42)));
+    c = 1.0 - 0.5 * t2 * (1.0 - t2 * k12 * (1.0 - t2 * k30 * (1.0 - t2 * k56)));
+  } else {
+    s = std::sin(t);
+    c = std::cos(t);
+  }
+}
+
 // R_k(h): the body turns by theta = h L_k / I_k about its own axis k; seen from the body, the
 // (fixed) space-frame angular momentum turns by -theta about that axis.
-void rotate_about_body_axis(int k, Quaternion& q, Vec3& L, const Vec3& inertia, double h) {
-  if (!(inertia[k] > 0.0)) return;
-  const double theta = h * L[k] / inertia[k];
-  Vec3 axis{};
-  axis[k] = 1.0;
-  q = q * Quaternion::about_axis(axis, theta);
-  const double c = std::cos(theta), s = std::sin(theta);
-  const int a = (k + 1) % 3, b = (k + 2) % 3;  // L_body <- R_k(-theta) L_body
+// The axis is a template argument: the components it picks are fixed at compile time.
+template <int k>
+[[gnu::always_inline]] inline void rotate_about_body_axis(Quaternion& q, Vec3& L, const Vec3& inverse_inertia, double h) {
+  const double theta = h * L[k] * inverse_inertia[k];
+  double half_s, half_c;
+  step_sincos(0.5 * theta, half_s, half_c);
+  // q <- q (cos(theta/2), sin(theta/2) e_k): the Hamilton product with a turn about one axis.
+  const Quaternion p = q;
+  if constexpr (k == 0) {
+    q = {p.w * half_c - p.x * half_s, p.x * half_c + p.w * half_s, p.y * half_c + p.z * half_s, p.z * half_c - p.y * half_s};
+  } else if constexpr (k == 1) {
+    q = {p.w * half_c - p.y * half_s, p.x * half_c - p.z * half_s, p.y * half_c + p.w * half_s, p.z * half_c + p.x * half_s};
+  } else {
+    q = {p.w * half_c - p.z * half_s, p.x * half_c + p.y * half_s, p.y * half_c - p.x * half_s, p.z * half_c + p.w * half_s};
+  }
+  double s, c;
+  step_sincos(theta, s, c);
+  constexpr int a = (k + 1) % 3, b = (k + 2) % 3;  // L_body <- R_k(-theta) L_body
   const double La = L[a], Lb = L[b];
   L[a] = c * La + s * Lb;
   L[b] = -s * La + c * Lb;
@@ -23,12 +53,17 @@ void rotate_about_body_axis(int k, Quaternion& q, Vec3& L, const Vec3& inertia, 
 
 void rotate_freely(Quaternion& q, Vec3& momentum_body, const Vec3& inertia, double dt) {
   // Miller et al. (2002): the symmetric splitting, the third axis outermost.
-  rotate_about_body_axis(2, q, momentum_body, inertia, 0.5 * dt);
-  rotate_about_body_axis(1, q, momentum_body, inertia, 0.5 * dt);
-  rotate_about_body_axis(0, q, momentum_body, inertia, dt);
-  rotate_about_body_axis(1, q, momentum_body, inertia, 0.5 * dt);
-  rotate_about_body_axis(2, q, momentum_body, inertia, 0.5 * dt);
-  q = normalised(q);
+  // A zero moment (a body without extent about an axis) does not turn about that axis.
+  const Vec3 inverse{inertia.x > 0.0 ? 1.0 / inertia.x : 0.0, inertia.y > 0.0 ? 1.0 / inertia.y : 0.0,
+                     inertia.z > 0.0 ? 1.0 / inertia.z : 0.0};
+  rotate_about_body_axis<2>(q, momentum_body, inverse, 0.5 * dt);
+  rotate_about_body_axis<1>(q, momentum_body, inverse, 0.5 * dt);
+  rotate_about_body_axis<0>(q, momentum_body, inverse, dt);
+  rotate_about_body_axis<1>(q, momentum_body, inverse, 0.5 * dt);
+  rotate_about_body_axis<2>(q, momentum_body, inverse, 0.5 * dt);
+  // Renormalised against round-off: one division, the rest multiplications.
+  const double scale = 1.0 / std::sqrt(q.w * q.w + q.x * q.x + q.y * q.y + q.z * q.z);
+  q = {q.w * scale, q.x * scale, q.y * scale, q.z * scale};
 }
 
 Vec3 angular_velocity_space(const Quaternion& q, const Vec3& L, const Vec3& inertia) {

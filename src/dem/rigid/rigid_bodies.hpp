@@ -43,6 +43,11 @@ struct RigidBodies {
   // (kNoBody when it has none), after every re-ordering of the particles (locate_members).
   std::vector<std::uint32_t> member_particle;
   std::vector<std::uint32_t> body_of_particle;
+  // Workspaces of the step (body_motion.cpp), valid from a placement of the members to the next
+  // turn of the bodies: each member's arm (m, centre of mass to its centre, space frame) and each
+  // body's angular velocity (rad/s, space frame).
+  std::vector<Vec3> arm;
+  std::vector<Vec3> spin;
 
   std::size_t size() const { return id.size(); }
   bool empty() const { return id.empty(); }
