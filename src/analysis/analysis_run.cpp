@@ -245,7 +245,8 @@ AnalysisResult analyze_snapshot_file(const std::filesystem::path& h5_path, const
   order.push_back(choice.at);
   std::vector<AnalysisFrame> frames;
   for (std::size_t k : order) {
-    frames.push_back({infos[k].name, infos[k].trapdoor_displacement, read_snapshot(h5_path, infos[k].name)});
+    // A run of clumps is analysed on its grains' centres of mass, not on their member spheres.
+    frames.push_back({infos[k].name, infos[k].trapdoor_displacement, grain_view(read_snapshot(h5_path, infos[k].name))});
   }
   return analyze_frames(frames, geometry, settings);
 }

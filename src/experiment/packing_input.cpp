@@ -66,6 +66,10 @@ PackingParticles from_snapshot(const PackingConfig& c, double default_density) {
                                  "(or no packing.snapshot: the last)", h5.string(), c.snapshot, n, n - 1));
   const SnapshotInfo& info = list[std::size_t(c.snapshot < 0 ? n - 1 : c.snapshot)];
   const Snapshot s = read_snapshot(h5, info.name);
+  if (!s.bodies.empty())
+    throw InputError(fmt::format("{} snapshot {}: a snapshot of {} clumps; a [packing] is read as spheres, and a "
+                                 "clump's member spheres are not (docs/config.md, [particles.shape]): pour the "
+                                 "clumps instead", h5.string(), info.name, s.bodies.size()));
   PackingParticles out;
   out.particles.reserve(s.size());
   for (std::size_t i = 0; i < s.size(); ++i)

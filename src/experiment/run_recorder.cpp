@@ -74,7 +74,7 @@ void RunRecorder::snapshot_due(const std::string& label) {
   const Particles& particles = ranks_ ? gathered : sim.particles();
   on_root(ranks_, [&] {
     const std::string name =
-        append_snapshot(folder_.snapshots_h5(), make_snapshot(particles, sim.time(), label,
+        append_snapshot(folder_.snapshots_h5(), make_snapshot(particles, sim.bodies(), sim.time(), label,
                                                               experiment_.trapdoor_displacement(), sim.step_count()));
     say(fmt::format("snapshot {} ({}, trapdoor at {} mm, {} particles)", name, label,
                     fixed_text(experiment_.trapdoor_displacement() * 1e3, 2), particles.size()));

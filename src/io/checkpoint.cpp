@@ -155,6 +155,87 @@ Simulation::ListState read_lists(const Hdf5Group& g) {
   return lists;
 }
 
+// The rigid bodies' state (clumps): every per-body and per-member array of RigidBodies but the
+// derived ones, which restore() finds again from the particles' order.
+RigidBodies body_state(const RigidBodies& b) {
+  RigidBodies s;
+  s.id = b.id;
+  s.mass = b.mass;
+  s.volume = b.volume;
+  s.principal_inertia = b.principal_inertia;
+  s.position = b.position;
+  s.velocity = b.velocity;
+  s.orientation = b.orientation;
+  s.angular_momentum = b.angular_momentum;
+  s.force = b.force;
+  s.torque = b.torque;
+  s.first_member = b.first_member;
+  s.member_id = b.member_id;
+  s.member_offset = b.member_offset;
+  return s;
+}
+
+void write_bodies(const Hdf5Group& g, const RigidBodies& b) {
+  g.write_int64s("id", b.id);
+  g.write_doubles("mass", b.mass, "kg");
+  g.write_doubles("volume", b.volume, "m^3");
+  g.write_vec3s("principal_inertia", b.principal_inertia, "kg m^2");
+  g.write_vec3s("position", b.position, "m");
+  g.write_vec3s("velocity", b.velocity, "m/s");
+  g.write_quaternions("orientation", b.orientation);
+  g.write_vec3s("angular_momentum", b.angular_momentum, "kg m^2/s");
+  g.write_vec3s("force", b.force, "N");
+  g.write_vec3s("torque", b.torque, "N m");
+  g.write_uint32s("first_member", b.first_member);
+  g.write_int64s("member_id", b.member_id);
+  g.write_vec3s("member_offset", b.member_offset, "m");
+}
+
+// The bodies, checked as the particles are (read_particles) and against them: every particle a
+// member of exactly one body (check_body_members).
+RigidBodies read_bodies(const Hdf5Group& g, const std::vector<std::int64_t>& particle_id) {
+  RigidBodies b;
+  b.id = g.read_int64s("id");
+  b.mass = g.read_doubles("mass");
+  b.volume = g.read_doubles("volume");
+  b.principal_inertia = g.read_vec3s("principal_inertia");
+  b.position = g.read_vec3s("position");
+  b.velocity = g.read_vec3s("velocity");
+  b.orientation = g.read_quaternions("orientation");
+  b.angular_momentum = g.read_vec3s("angular_momentum");
+  b.force = g.read_vec3s("force");
+  b.torque = g.read_vec3s("torque");
+  b.first_member = g.read_uint32s("first_member");
+  b.member_id = g.read_int64s("member_id");
+  b.member_offset = g.read_vec3s("member_offset");
+  const std::size_t n = b.id.size();
+  for (std::size_t size : {b.mass.size(), b.volume.size(), b.principal_inertia.size(), b.position.size(), b.velocity.size(),
+                           b.orientation.size(), b.angular_momentum.size(), b.force.size(), b.torque.size()}) {
+    if (size != n)
+      throw FileError(fmt::format("{}: body arrays differ in length ({} ids, an array of {})", g.describe(), n, size));
+  }
+  if (b.member_offset.size() != b.member_id.size())
+    throw FileError(fmt::format("{}: member arrays differ in length ({} member ids, {} offsets)", g.describe(),
+                                b.member_id.size(), b.member_offset.size()));
+  const std::string where = g.describe();
+  check_body_rows(where, b.id, b.position, b.velocity, b.orientation);
+  check_positive_column(where, "mass (kg)", b.id, b.mass, "body");
+  check_positive_column(where, "volume (m^3)", b.id, b.volume, "body");
+  for (std::size_t k = 0; k < n; ++k) {
+    const Vec3& inertia = b.principal_inertia[k];
+    if (!(inertia.x > 0.0 && inertia.y > 0.0 && inertia.z > 0.0) || !is_finite(inertia))
+      throw FileError(fmt::format("{}: row {} (body id {}): principal_inertia ({}, {}, {}) kg m^2: expected positive "
+                                  "finite numbers (the file is damaged or was not written by trapdem)",
+                                  where, k, b.id[k], inertia.x, inertia.y, inertia.z));
+  }
+  check_finite_column(where, "angular_momentum (kg m^2/s)", b.id, b.angular_momentum, "body");
+  check_finite_column(where, "force (N)", b.id, b.force, "body");
+  check_finite_column(where, "torque (N m)", b.id, b.torque, "body");
+  check_body_members(where, b.id, b.first_member, b.member_id, particle_id);
+  check_finite_column(where, "member_offset (m)", b.member_id, b.member_offset, "member");
+  return b;
+}
+
 // The contact histories by particle ids (a checkpoint of a run on several ranks).
 void write_histories(const Hdf5Group& g, const HistoryArchive& a) {
   std::vector<std::int64_t> low, high, particle;
@@ -202,6 +283,7 @@ HistoryArchive read_histories(const Hdf5Group& g) {
 Checkpoint capture_checkpoint(const Simulation& simulation, std::map<std::string, std::string> metadata) {
   Checkpoint c;
   c.particles = simulation.particles();
+  c.bodies = body_state(simulation.bodies());
   c.lists = simulation.list_state();
   c.time = simulation.time();
   c.time_step = simulation.time_step();
@@ -224,6 +306,7 @@ void write_checkpoint(const std::filesystem::path& path, const Checkpoint& c) {
     file.set_int_attribute("rebuilds_since_reorder", c.lists.rebuilds_since_reorder);
 
     write_particles(file.create_group("particles"), c.particles);
+    if (!c.bodies.empty()) write_bodies(file.create_group("bodies"), c.bodies);  // a run of spheres has none
     write_lists(file, c.lists);
     write_walls(file.create_group("walls"), c.walls);
     if (c.histories) write_histories(file.create_group("histories_by_id"), *c.histories);
@@ -263,6 +346,8 @@ Checkpoint read_checkpoint(const std::filesystem::path& path) {
   c.lists.rebuilds_since_reorder = file.int_attribute("rebuilds_since_reorder");
 
   c.particles = read_particles(file.group("particles"));
+  // No group: a run of spheres, or a file written before checkpoints held bodies.
+  if (file.has("bodies")) c.bodies = read_bodies(file.group("bodies"), c.particles.id);
 
   const std::int64_t rebuilds_since_reorder = c.lists.rebuilds_since_reorder;
   c.lists = read_lists(file);
@@ -314,10 +399,26 @@ void restore_walls(Simulation& simulation, const Checkpoint& c) {
 
 void restore_checkpoint(Simulation& simulation, Checkpoint c) {
   restore_walls(simulation, c);
+  // A simulation built with bodies and a checkpoint without: its particles would go on as free
+  // spheres, a different run. (A checkpoint's bodies into a simulation without them is a resume
+  // during a pour of clumps: the bodies were added as the run went.)
+  if (c.bodies.empty() && !simulation.bodies().empty())
+    throw InputError(fmt::format("checkpoint: it holds no rigid bodies, the simulation has {}; build the simulation "
+                                 "as the checkpointed run did (a checkpoint of a run of clumps written before "
+                                 "checkpoints held bodies cannot resume it)",
+                                 simulation.bodies().size()));
   const std::size_t n = c.particles.size();
   // Lists that do not match the particles: particles were added after the last step and the
   // next step rebuilds. Assigning the particles afterwards (particles_mutable) leaves them invalid.
   const bool lists_match = c.lists.position_at_build.size() == n && c.lists.pairs.first.size() == n + 1;
+
+  // The bodies before the particles and the lists: restore() finds their members among the particles
+  // and sums the members' loads onto them. Their members are located here too, for a checkpoint that
+  // never stepped: its first step places the members before a list build would locate them.
+  if (!c.bodies.empty()) {
+    c.bodies.locate_members(c.particles.id);
+    simulation.restore_bodies(std::move(c.bodies));
+  }
 
   // A checkpoint of a simulation that never stepped: the fresh one is already in that state, with
   // its set-up (initial forces) still to come.

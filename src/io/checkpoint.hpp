@@ -1,7 +1,8 @@
 #pragma once
 // Engine checkpoints: everything a Simulation needs to continue bit for bit (particles with their
-// forces, the Verlet lists with every contact's history, time, counters, wall states), plus a
-// free-form string map for the caller's own state (stage, progress, experiment bookkeeping).
+// forces, the rigid bodies of a run of clumps, the Verlet lists with every contact's history, time,
+// counters, wall states), plus a free-form string map for the caller's own state (stage, progress,
+// experiment bookkeeping).
 // Written atomically (io/atomic_file.hpp): a failed write leaves the previous checkpoint intact.
 // Layout: docs/output.md, "checkpoint.h5".
 #include <filesystem>
@@ -37,6 +38,10 @@ struct RankState {
 
 struct Checkpoint {
   Particles particles;
+  // The rigid bodies (clumps) whose members the particles are; empty in a run of spheres (and in a
+  // file written before checkpoints held bodies). State only: the derived arrays (member_particle,
+  // body_of_particle) and the step's workspaces are left empty, as restore() finds them again.
+  RigidBodies bodies;
   Simulation::ListState lists;
   double time = 0.0;                 // s
   double time_step = 0.0;            // s, checked on restore: another step would not continue the run
@@ -69,7 +74,9 @@ Checkpoint read_checkpoint(const std::filesystem::path& path);
 
 // Puts the checkpoint into a Simulation constructed as the checkpointed one was (same settings,
 // laws and walls added in the same order, gravity and wall velocities set as functions of time).
-// Throws InputError if the walls or the time step differ (the resumed run would silently diverge).
+// Throws InputError if the walls or the time step differ (the resumed run would silently diverge),
+// or if the simulation was built with rigid bodies and the checkpoint holds none. The checkpoint's
+// bodies replace the simulation's (Simulation::restore_bodies, before its particles and lists).
 // A checkpoint with histories by ids (a run on several ranks) puts every particle into the
 // simulation and lets its next step rebuild the lists (on a decomposition: each rank keeps its
 // share, Simulation::resume_from_histories).

@@ -330,6 +330,10 @@ void Hdf5Group::write_int3s(std::string_view name, std::span<const Int3> data) c
   static_assert(sizeof(Int3) == 3 * sizeof(std::int32_t), "Int3 must be three packed int32");
   write_dataset(*this, name, H5T_STD_I32LE, H5T_NATIVE_INT32, data.data(), data.size(), 3, {});
 }
+void Hdf5Group::write_quaternions(std::string_view name, std::span<const Quaternion> data) const {
+  static_assert(sizeof(Quaternion) == 4 * sizeof(double), "Quaternion must be four packed doubles (w, x, y, z)");
+  write_dataset(*this, name, H5T_IEEE_F64LE, H5T_NATIVE_DOUBLE, data.data(), data.size(), 4, {});
+}
 
 void Hdf5Group::write_strings(std::string_view name, const std::vector<std::string>& data) const {
   std::vector<const char*> pointers;
@@ -355,6 +359,9 @@ std::vector<Vec3> Hdf5Group::read_vec3s(std::string_view name) const {
 }
 std::vector<Int3> Hdf5Group::read_int3s(std::string_view name) const {
   return read_dataset<Int3>(*this, name, H5T_NATIVE_INT32, 3);
+}
+std::vector<Quaternion> Hdf5Group::read_quaternions(std::string_view name) const {
+  return read_dataset<Quaternion>(*this, name, H5T_NATIVE_DOUBLE, 4);
 }
 
 std::vector<std::string> Hdf5Group::read_strings(std::string_view name) const {

@@ -1,5 +1,5 @@
 #pragma once
-// A thin RAII layer over the HDF5 C API: files, groups, 1-D and N x 3 datasets, scalar attributes.
+// A thin RAII layer over the HDF5 C API: files, groups, 1-D, N x 3 and N x 4 datasets, scalar attributes.
 // Only what trapdem's files need. Every failure throws FileError naming the file, the object path
 // inside it and the HDF5 library's own reason; HDF5's automatic printing of its error stack to
 // stderr is switched off (the message carries the reason instead).
@@ -14,6 +14,7 @@
 #include <vector>
 
 #include "dem/particles.hpp"
+#include "dem/rigid/quaternion.hpp"
 #include "dem/vec3.hpp"
 #include "core/errors.hpp"
 
@@ -61,14 +62,15 @@ class Hdf5Group {
   };
   std::optional<ExternalTarget> external_link(std::string_view name) const;  // empty: not an external link
 
-  // Datasets: 1-D of length N, or N x 3 for vectors. `units` (optional) is stored as the
-  // dataset's string attribute "units".
+  // Datasets: 1-D of length N, N x 3 for vectors, N x 4 for quaternions (w, x, y, z). `units`
+  // (optional) is stored as the dataset's string attribute "units".
   void write_doubles(std::string_view name, std::span<const double> data, std::string_view units = {}) const;
   void write_int64s(std::string_view name, std::span<const std::int64_t> data, std::string_view units = {}) const;
   void write_uint32s(std::string_view name, std::span<const std::uint32_t> data) const;
   void write_uint8s(std::string_view name, std::span<const std::uint8_t> data) const;
   void write_vec3s(std::string_view name, std::span<const Vec3> data, std::string_view units = {}) const;
   void write_int3s(std::string_view name, std::span<const Int3> data) const;   // N x 3 int32
+  void write_quaternions(std::string_view name, std::span<const Quaternion> data) const;  // N x 4 float64
   void write_strings(std::string_view name, const std::vector<std::string>& data) const;  // variable-length UTF-8
 
   // Readers check the rank and shape and convert the stored number type to the requested one
@@ -79,6 +81,7 @@ class Hdf5Group {
   std::vector<std::uint8_t> read_uint8s(std::string_view name) const;
   std::vector<Vec3> read_vec3s(std::string_view name) const;
   std::vector<Int3> read_int3s(std::string_view name) const;
+  std::vector<Quaternion> read_quaternions(std::string_view name) const;
   std::vector<std::string> read_strings(std::string_view name) const;
   std::size_t dataset_length(std::string_view name) const;  // first dimension
 

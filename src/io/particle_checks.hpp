@@ -7,6 +7,7 @@
 #include <string>
 #include <vector>
 
+#include "dem/rigid/quaternion.hpp"
 #include "dem/vec3.hpp"
 
 namespace trapdem {
@@ -26,10 +27,26 @@ void check_particle_rows(const std::string& where, const std::vector<std::int64_
                          const std::vector<Vec3>& angular_velocity, bool distinct_ids = true);
 
 // A per-particle array of positive finite numbers (masses, inverse masses and inertias) or of finite
-// vectors (forces, torques): the same error form, naming the array.
+// vectors (forces, torques): the same error form, naming the array. `row` names what a row is
+// ("particle", or "body" for the rigid bodies' arrays).
 void check_positive_column(const std::string& where, const char* column, const std::vector<std::int64_t>& id,
-                           const std::vector<double>& values);
+                           const std::vector<double>& values, const char* row = "particle");
 void check_finite_column(const std::string& where, const char* column, const std::vector<std::int64_t>& id,
-                         const std::vector<Vec3>& values);
+                         const std::vector<Vec3>& values, const char* row = "particle");
+
+// The rigid bodies' rows (clumps) read from `where`: ids non-negative and distinct, centres of mass
+// finite, velocities finite and below kMaxReadSpeed, orientations finite unit quaternions (to 1e-6:
+// the engine renormalises them every step, so more is damage, not round-off). Same error form,
+// naming the body id.
+void check_body_rows(const std::string& where, const std::vector<std::int64_t>& id, const std::vector<Vec3>& position,
+                     const std::vector<Vec3>& velocity, const std::vector<Quaternion>& orientation);
+
+// The bodies' members in CSR form (rigid/rigid_bodies.hpp) against the particles read beside them:
+// first_member starts at 0, grows by at least one member per body and ends at member_id's length,
+// and the members are the particles, each exactly once (in a run with bodies every particle is a
+// member of one). Throws FileError naming `where` and the first body or id at fault.
+void check_body_members(const std::string& where, const std::vector<std::int64_t>& body_id,
+                        const std::vector<std::uint32_t>& first_member, const std::vector<std::int64_t>& member_id,
+                        const std::vector<std::int64_t>& particle_id);
 
 }  // namespace trapdem

@@ -1,6 +1,10 @@
 #include "io/snapshot.hpp"
 
+#include <algorithm>
 #include <cmath>
+#include <numbers>
+#include <unordered_set>
+#include <utility>
 
 #include <fmt/format.h>
 
@@ -59,6 +63,7 @@ SnapshotInfo info_of(const Hdf5Group& g, const std::string& name, bool own) {
     throw FileError(fmt::format("{}: time {} s, trapdoor_displacement {} m: expected finite numbers (the file is damaged)",
                                 g.describe(), info.time, info.trapdoor_displacement));
   info.particle_count = g.dataset_length("id");
+  info.has_body = g.has("body");
   return info;
 }
 
@@ -111,6 +116,53 @@ void write_snapshot_data(const Hdf5Group& g, const Snapshot& s) {
   g.write_doubles("radius", s.radius, "m");
   if (s.image.empty()) g.write_int3s("image", std::vector<Int3>(s.size()));
   else g.write_int3s("image", s.image);
+  // A run of clumps: each particle's body, and the bodies themselves (a run of spheres has neither).
+  if (!s.body.empty()) g.write_int64s("body", s.body);
+  if (!s.bodies.empty()) {
+    const Hdf5Group b = g.create_group("bodies");
+    b.write_int64s("id", s.bodies.id);
+    b.write_vec3s("position", s.bodies.position, "m");
+    b.write_doubles("radius", s.bodies.radius, "m");
+    b.write_vec3s("velocity", s.bodies.velocity, "m/s");
+    b.write_quaternions("orientation", s.bodies.orientation);
+    b.write_vec3s("angular_velocity", s.bodies.angular_velocity, "rad/s");
+  }
+}
+
+SnapshotBodies read_bodies(const Hdf5Group& g) {
+  SnapshotBodies b;
+  b.id = g.read_int64s("id");
+  b.position = g.read_vec3s("position");
+  b.radius = g.read_doubles("radius");
+  b.velocity = g.read_vec3s("velocity");
+  b.orientation = g.read_quaternions("orientation");
+  b.angular_velocity = g.read_vec3s("angular_velocity");
+  const std::size_t n = b.id.size();
+  for (std::size_t size : {b.position.size(), b.radius.size(), b.velocity.size(), b.orientation.size(), b.angular_velocity.size()}) {
+    if (size != n)
+      throw FileError(
+          fmt::format("{}: body datasets differ in length ({} ids, a dataset of {})", g.describe(), n, size));
+  }
+  check_body_rows(g.describe(), b.id, b.position, b.velocity, b.orientation);
+  check_finite_column(g.describe(), "angular_velocity (rad/s)", b.id, b.angular_velocity, "body");
+  check_positive_column(g.describe(), "radius (m)", b.id, b.radius, "body");
+  return b;
+}
+
+// Each particle's body is one of the snapshot's bodies (or none, kNoBodyId); without the bodies
+// (a file of another tool may give the ids alone) only the value's range is checked.
+void check_particle_bodies(const std::string& where, const Snapshot& s) {
+  const std::unordered_set<std::int64_t> bodies(s.bodies.id.begin(), s.bodies.id.end());
+  for (std::size_t k = 0; k < s.body.size(); ++k) {
+    const std::int64_t b = s.body[k];
+    const bool known = b == kNoBodyId || (s.bodies.empty() ? b >= 0 : bodies.count(b) > 0);
+    if (!known)
+      throw FileError(fmt::format("{}: row {} (particle id {}): body {}: expected {} or {} (no body) (the file is "
+                                  "damaged or was not written by trapdem)",
+                                  where, k, s.id[k], b,
+                                  s.bodies.empty() ? "a body id >= 0" : "the id of one of the snapshot's bodies",
+                                  kNoBodyId));
+  }
 }
 
 fs::path xdmf_path_of(const fs::path& h5_path) {
@@ -137,11 +189,44 @@ Snapshot make_snapshot(const Particles& p, double time, std::string stage, doubl
   return s;
 }
 
+Snapshot make_snapshot(const Particles& p, const RigidBodies& bodies, double time, std::string stage,
+                       double trapdoor_displacement, std::int64_t step) {
+  Snapshot s = make_snapshot(p, time, std::move(stage), trapdoor_displacement, step);
+  if (bodies.empty()) return s;
+  // Member id -> body id, sorted: one binary search per particle.
+  std::vector<std::pair<std::int64_t, std::int64_t>> body_of_member;
+  body_of_member.reserve(bodies.member_count());
+  for (std::size_t b = 0; b < bodies.size(); ++b)
+    for (std::uint32_t m = bodies.first_member[b]; m < bodies.first_member[b + 1]; ++m)
+      body_of_member.emplace_back(bodies.member_id[m], bodies.id[b]);
+  std::sort(body_of_member.begin(), body_of_member.end());
+  s.body.resize(p.size());
+  for (std::size_t i = 0; i < p.size(); ++i) {
+    const auto it = std::lower_bound(body_of_member.begin(), body_of_member.end(), std::pair{p.id[i], std::int64_t{}},
+                                     [](const auto& a, const auto& b) { return a.first < b.first; });
+    s.body[i] = it != body_of_member.end() && it->first == p.id[i] ? it->second : kNoBodyId;
+  }
+  s.bodies.id = bodies.id;
+  s.bodies.position = bodies.position;
+  s.bodies.radius.resize(bodies.size());
+  for (std::size_t b = 0; b < bodies.size(); ++b)
+    s.bodies.radius[b] = std::cbrt(3.0 * bodies.volume[b] / (4.0 * std::numbers::pi));
+  s.bodies.velocity = bodies.velocity;
+  s.bodies.orientation = bodies.orientation;
+  s.bodies.angular_velocity.resize(bodies.size());
+  for (std::size_t b = 0; b < bodies.size(); ++b) s.bodies.angular_velocity[b] = bodies.angular_velocity(b);
+  return s;
+}
+
 std::string append_snapshot(const fs::path& h5_path, const Snapshot& s) {
   const std::size_t n = s.size();
   if (s.position.size() != n || s.velocity.size() != n || s.angular_velocity.size() != n || s.radius.size() != n ||
-      (!s.image.empty() && s.image.size() != n))
+      (!s.image.empty() && s.image.size() != n) || (!s.body.empty() && s.body.size() != n))
     throw FileError(fmt::format("{}: snapshot arrays differ in length ({} ids)", h5_path.string(), n));
+  const std::size_t bodies = s.bodies.size();
+  if (s.bodies.position.size() != bodies || s.bodies.radius.size() != bodies || s.bodies.velocity.size() != bodies ||
+      s.bodies.orientation.size() != bodies || s.bodies.angular_velocity.size() != bodies)
+    throw FileError(fmt::format("{}: snapshot body arrays differ in length ({} body ids)", h5_path.string(), bodies));
   std::error_code ec;
   const bool fresh = !fs::exists(h5_path, ec);
   const std::string name = group_name(fresh ? 0 : list_snapshots(h5_path).size());
@@ -213,6 +298,22 @@ void keep_snapshots(const fs::path& h5_path, std::size_t keep) {
 
 std::vector<SnapshotInfo> list_snapshots(const fs::path& h5_path) { return list_in(Hdf5File::open_read(h5_path)); }
 
+Snapshot grain_view(const Snapshot& s) {
+  if (s.bodies.empty()) return s;
+  Snapshot g;
+  g.time = s.time;
+  g.stage = s.stage;
+  g.trapdoor_displacement = s.trapdoor_displacement;
+  g.step = s.step;
+  g.id = s.bodies.id;
+  g.position = s.bodies.position;
+  g.velocity = s.bodies.velocity;
+  g.angular_velocity = s.bodies.angular_velocity;
+  g.radius = s.bodies.radius;
+  g.image.assign(s.bodies.size(), Int3{});  // bodies run with bounded axes only
+  return g;
+}
+
 Snapshot read_snapshot(const fs::path& h5_path, const std::string& name) {
   const Hdf5File file = Hdf5File::open_read(h5_path);
   const Hdf5Group g = file.group(kRoot).group(name);
@@ -235,6 +336,15 @@ Snapshot read_snapshot(const fs::path& h5_path, const std::string& name) {
       throw FileError(fmt::format("{}: datasets differ in length ({} ids, a dataset of {})", g.describe(), n, size));
   }
   check_particle_rows(g.describe(), s.id, s.position, s.radius, s.velocity, s.angular_velocity);
+  // A run of clumps (absent in a run of spheres and in files written before snapshots held bodies).
+  if (g.has("bodies")) s.bodies = read_bodies(g.group("bodies"));
+  if (g.has("body")) {
+    s.body = g.read_int64s("body");
+    if (s.body.size() != n)
+      throw FileError(fmt::format("{}: datasets differ in length ({} ids, a dataset of {})", g.describe("body"), n,
+                                  s.body.size()));
+    check_particle_bodies(g.describe(), s);
+  }
   return s;
 }
 
@@ -287,6 +397,7 @@ std::string snapshot_xdmf(const std::string& h5_file_name, const std::vector<Sna
     x += attribute("id", "Scalar", 1, "Int");
     x += attribute("velocity", "Vector", 3, "Float");
     x += attribute("angular_velocity", "Vector", 3, "Float");
+    if (s.has_body) x += attribute("body", "Scalar", 1, "Int");
     x += "      </Grid>\n";
   }
   x += "    </Grid>\n  </Domain>\n</Xdmf>\n";

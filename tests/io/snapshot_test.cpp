@@ -1,14 +1,20 @@
 // snapshots.h5 (an index of one file per snapshot) and its XDMF companion: appends keep earlier
 // snapshots untouched, read back exactly, a failed append leaves the previous files, truncation
 // drops later snapshots, the single-file layout still reads, and the XDMF references every
-// non-empty snapshot.
+// non-empty snapshot. A run of clumps adds each particle's body and the bodies.
 #include "io/snapshot.hpp"
 
 #include <gtest/gtest.h>
 #include <sys/stat.h>
 
 #include <algorithm>
+#include <cmath>
+#include <numbers>
 
+#include <fmt/format.h>
+
+#include "dem/rigid/clump_shapes.hpp"
+#include "dem/simulation.hpp"
 #include "io/hdf5_file.hpp"
 #include "io_test_support.hpp"
 
@@ -223,4 +229,121 @@ TEST(Snapshots, ReadsAMinimalFileWrittenByAnotherTool) {
   EXPECT_EQ(s.trapdoor_displacement, 0.02);
   EXPECT_EQ(s.velocity.size(), 2u);
   EXPECT_EQ(s.stage, "");
+}
+
+namespace {
+
+// Six clumps (sub-angular grains and dimers, 2 mm) dropped onto a floor, run long enough for list
+// rebuilds to re-order the particles, so that rows are neither in member nor in id order.
+Simulation small_clump_run() {
+  const ClumpTemplate grain =
+      make_clump_template(sub_angular_members(5, 0.6, 1.3, 0.9), "grain").scaled_to(0.002);
+  const ClumpTemplate dimer = make_clump_template(dimer_members(1.5), "dimer").scaled_to(0.002);
+  Particles p;
+  RigidBodies bodies;
+  std::int64_t member_id = 1;
+  for (int k = 0; k < 6; ++k) {
+    const ClumpTemplate& shape = k % 2 ? dimer : grain;
+    const Vec3 centre{0.003 * (k % 3), 0.003 * (k / 3), 0.0015 + 0.0007 * k};
+    add_rigid_body(bodies, p, 60 - 10 * k, member_id, shape, 2500.0, centre, Quaternion::about_axis({0.6, 0.0, 0.8}, 0.4 * k),
+                   {0.0, 0.0, -0.05}, {10.0 * k, -5.0, 3.0});
+    member_id += std::int64_t(shape.members.size());
+  }
+  SimulationSettings s;
+  s.domain.lower = {-0.01, -0.01, -0.001};
+  s.domain.upper = {0.02, 0.02, 0.02};
+  s.reorder_every = 1;
+  ContactLaw law;
+  law.normal_stiffness = 1.0e4;
+  law.tangential_stiffness = 0.5e4;
+  law.restitution = 0.3;
+  law.static_friction = 0.5;
+  law.kinetic_friction = 0.4;
+  Simulation sim(std::move(p), law, s, std::move(bodies));
+  sim.add_wall(Wall::plane("floor", {0, 0, 0}, {0, 0, 1}, law));
+  sim.set_gravity(Vec3{0.0, 0.0, -50.0 * 9.81});
+  return sim;
+}
+
+}  // namespace
+
+// A snapshot of a run of clumps holds each particle's body id and the bodies' centres of mass,
+// velocities, orientations and angular velocities, read back bit for bit; the XDMF gives ParaView
+// the body id as a particle attribute. A snapshot of spheres in the same file has neither.
+TEST(Snapshots, ARunOfClumpsRecordsEachParticlesBodyAndTheBodies) {
+  ScratchDir dir;
+  const auto path = dir / "snapshots.h5";
+  Simulation sim = small_clump_run();
+  sim.run(2000);
+  ASSERT_GT(sim.stats().rebuilds, 1);
+  const Particles& p = sim.particles();
+  ASSERT_FALSE(std::is_sorted(p.id.begin(), p.id.end())) << "rows re-ordered in space";
+  const RigidBodies& bodies = sim.bodies();
+  append_snapshot(path, make_snapshot(some_particles(4, 0.0), 0.5, "settling", 0.0, 10));
+  append_snapshot(path, make_snapshot(p, bodies, sim.time(), "pluviation", 0.0, sim.step_count()));
+
+  const Snapshot spheres = read_snapshot(path, "000000");
+  EXPECT_TRUE(spheres.body.empty());
+  EXPECT_TRUE(spheres.bodies.empty());
+
+  const Snapshot s = read_snapshot(path, "000001");
+  ASSERT_EQ(s.size(), p.size());
+  ASSERT_EQ(s.body.size(), p.size());
+  // Each row's body, found independently: the body whose members list the row's particle id.
+  std::size_t wrong_body = 0;
+  for (std::size_t i = 0; i < s.size(); ++i) {
+    std::int64_t expected = kNoBodyId;
+    for (std::size_t b = 0; b < bodies.size(); ++b)
+      for (std::uint32_t m = bodies.first_member[b]; m < bodies.first_member[b + 1]; ++m)
+        if (bodies.member_id[m] == s.id[i]) expected = bodies.id[b];
+    wrong_body += s.body[i] != expected || expected == kNoBodyId;
+  }
+  EXPECT_EQ(wrong_body, 0u);
+  ASSERT_EQ(s.bodies.size(), 6u);
+  EXPECT_EQ(s.bodies.id, bodies.id);
+  EXPECT_EQ(s.bodies.position, bodies.position);
+  EXPECT_EQ(s.bodies.velocity, bodies.velocity);
+  for (std::size_t b = 0; b < bodies.size(); ++b) {
+    const Quaternion& q = s.bodies.orientation[b];
+    const Quaternion& r = bodies.orientation[b];
+    EXPECT_TRUE(q.w == r.w && q.x == r.x && q.y == r.y && q.z == r.z) << "body " << bodies.id[b];
+    EXPECT_EQ(s.bodies.angular_velocity[b], bodies.angular_velocity(b)) << "body " << bodies.id[b];
+  }
+  EXPECT_GT(norm(s.bodies.angular_velocity[3]), 0.0) << "the bodies turn";
+
+  // The grains as the analysis follows them: a row per body, its volume-equivalent radius
+  // (3 V / 4 pi)^(1/3) of the union's volume, its centre of mass and motion.
+  const Snapshot grains = grain_view(s);
+  ASSERT_EQ(grains.size(), bodies.size());
+  EXPECT_EQ(grains.id, bodies.id);
+  EXPECT_EQ(grains.position, bodies.position);
+  for (std::size_t b = 0; b < bodies.size(); ++b)
+    EXPECT_DOUBLE_EQ(grains.radius[b], std::cbrt(3.0 * bodies.volume[b] / (4.0 * std::numbers::pi)));
+  EXPECT_EQ(grains.stage, s.stage);
+  EXPECT_EQ(grain_view(spheres).id, spheres.id) << "a snapshot of spheres is its own grains";
+
+  // The layout docs/output.md gives h5py users: an int64 column per particle, a group per snapshot.
+  const Hdf5File f = Hdf5File::open_read(dir / "snapshots" / "000001.h5");
+  EXPECT_EQ(f.dataset_length("body"), p.size());
+  const Hdf5Group g = f.group("bodies");
+  for (const char* name : {"id", "position", "radius", "velocity", "orientation", "angular_velocity"})
+    EXPECT_EQ(g.dataset_length(name), 6u) << name;
+
+  const std::string xmf = read_all(dir / "snapshots.xmf");
+  EXPECT_EQ(count(xmf, "<Attribute Name=\"body\" AttributeType=\"Scalar\""), 1u) << "the clumps' snapshot only";
+  EXPECT_EQ(count(xmf, ">snapshots/000001.h5:/body</DataItem>"), 1u) << xmf;
+  EXPECT_EQ(count(xmf, ">snapshots/000000.h5:/body</DataItem>"), 0u);
+}
+
+// A particle's body that is none of the snapshot's bodies is damage, named with its row.
+TEST(Snapshots, AParticlesUnknownBodyIsRefused) {
+  ScratchDir dir;
+  const auto path = dir / "snapshots.h5";
+  Simulation sim = small_clump_run();
+  Snapshot s = make_snapshot(sim.particles(), sim.bodies(), 0.0, "pluviation", 0.0, 0);
+  s.body[2] = 12345;
+  append_snapshot(path, s);
+  const std::string m = file_error_of([&] { read_snapshot(path, "000000"); });
+  EXPECT_NE(m.find("000000"), std::string::npos) << m;
+  EXPECT_NE(m.find(fmt::format("row 2 (particle id {}): body 12345", s.id[2])), std::string::npos) << m;
 }

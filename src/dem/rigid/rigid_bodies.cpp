@@ -58,6 +58,7 @@ std::size_t add_rigid_body(RigidBodies& bodies, Particles& particles, std::int64
   const Quaternion q = normalised(orientation);
   bodies.id.push_back(body_id);
   bodies.mass.push_back(mass);
+  bodies.volume.push_back(shape.volume);
   bodies.principal_inertia.push_back(inertia);
   bodies.position.push_back(position);
   bodies.velocity.push_back(velocity);

@@ -27,6 +27,7 @@ struct RigidBodies {
   // Per body.
   std::vector<std::int64_t> id;             // stable identity
   std::vector<double> mass;                 // kg
+  std::vector<double> volume;               // m^3, of the union of the members (the grain's size)
   std::vector<Vec3> principal_inertia;      // kg m^2, about the body frame's axes (principal ones)
   std::vector<Vec3> position;               // m, the centre of mass
   std::vector<Vec3> velocity;               // m/s, of the centre of mass
