@@ -66,6 +66,7 @@ study: build
 bench: build
 	@bash bench/run-bench.sh $(BUILD)
 	@if [ -x $(BUILD)/bench/mpi_standard ]; then NO_PEERS=1 bash bench/run-mpi.sh $(BUILD); fi
+	@if command -v lmp > /dev/null; then bash bench/run-clumps.sh $(BUILD); fi  # the clump bed beside LAMMPS rigid/small
 
 # The peers on 1 and 2 ranks, trapdem on 1 and 2 threads, then trapdem on 2 ranks against the
 # peers' 2-rank results of this same run.

@@ -5,8 +5,10 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <vector>
 
 #include "dem/rigid/free_rotation.hpp"
+#include "test_support.hpp"
 
 using namespace trapdem;
 
@@ -77,4 +79,38 @@ TEST(FreeRotation, IntermediateAxisUnstable) {
   EXPECT_GT(least_alignment(0), 0.99);
   EXPECT_GT(least_alignment(2), 0.99);
   EXPECT_LT(least_alignment(1), 0.0);  // it turned over
+}
+
+// The lanes' rotation (several bodies side by side) against rotate_freely one body at a time:
+// seven bodies of different inertias and momenta in groups of four and three, one of them turning
+// 0.05 rad a step (past the series: it takes rotate_freely itself), over 2000 steps. Tolerance
+// 1e-12: the lanes may fuse multiply-adds differently (~1e-16 a step, growing with the steps as
+// rounding does in a rotation, ~sqrt(steps) to steps x that); a wrong sign or axis in one lane's
+// product is off by the whole turn (1e-2 and more).
+TEST(FreeRotation, LanesAgreeWithOneBodyAtATime) {
+  constexpr int kBodies = 7;
+  std::vector<Quaternion> q(kBodies), q_ref(kBodies);
+  std::vector<Vec3> L(kBodies), L_ref(kBodies), I(kBodies);
+  for (int b = 0; b < kBodies; ++b) {
+    I[b] = {1.0 + 0.1 * b, 2.0 - 0.05 * b, 3.0 + 0.2 * b};
+    q[b] = normalised({0.9 - 0.1 * b, 0.1 * b, -0.3, 0.2 + 0.05 * b});
+    L[b] = {0.7 - 0.2 * b, -1.1 + 0.3 * b, 0.9 + 0.1 * b};
+  }
+  L[5] = {40.0, -30.0, 20.0};  // ~0.05 rad a step at dt 1e-3: past the series
+  q_ref = q;
+  L_ref = L;
+  const double dt = 1e-3;
+  for (int s = 0; s < 2000; ++s) {
+    rotate_freely_lanes(q.data(), L.data(), I.data(), dt, kRotationLanes);
+    rotate_freely_lanes(q.data() + kRotationLanes, L.data() + kRotationLanes, I.data() + kRotationLanes, dt,
+                        kBodies - kRotationLanes);
+    for (int b = 0; b < kBodies; ++b) rotate_freely(q_ref[b], L_ref[b], I[b], dt);
+  }
+  for (int b = 0; b < kBodies; ++b) {
+    const double dq = std::abs(q[b].w - q_ref[b].w) + std::abs(q[b].x - q_ref[b].x) + std::abs(q[b].y - q_ref[b].y) +
+                      std::abs(q[b].z - q_ref[b].z);
+    EXPECT_LT(dq, 1e-12) << "body " << b;
+    EXPECT_LT(norm(L[b] - L_ref[b]) / norm(L_ref[b]), 1e-12) << "body " << b;
+    trapdem::testing_support::report("body {}: quaternion off by {:.1e}, momentum by {:.1e}", b, dq, norm(L[b] - L_ref[b]) / norm(L_ref[b]));
+  }
 }

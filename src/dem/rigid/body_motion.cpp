@@ -70,22 +70,36 @@ DriftReport bodies_first_half_kick_and_drift(RigidBodies& bodies, Particles& par
   constexpr double kHuge = std::numeric_limits<double>::infinity();
   double max_d2 = 0.0, lo_x = kHuge, lo_y = kHuge, lo_z = kHuge, hi_x = -kHuge, hi_y = -kHuge, hi_z = -kHuge;
   int outside = 0;
-#pragma omp parallel for schedule(static) reduction(max : max_d2, hi_x, hi_y, hi_z) \
-    reduction(min : lo_x, lo_y, lo_z) reduction(| : outside)
-  for (std::size_t b = 0; b < n; ++b) {
-    Vec3& v = bodies.velocity[b];
-    if (kick.frame) v = kick.frame->coriolis_turn(v) + h * kick.frame->acceleration(bodies.position[b]);
-    v += h * (bodies.force[b] / bodies.mass[b] + kick.gravity);
-    bodies.position[b] += dt * v;
-    if (kick.rotate) {
+  // The bodies in groups of kRotationLanes, whose free rotations run side by side.
+  const std::size_t groups = (n + kRotationLanes - 1) / kRotationLanes;
+#pragma omp parallel for schedule(static)
+  for (std::size_t group = 0; group < groups; ++group) {
+    const std::size_t first = group * kRotationLanes;
+    const int count = int(std::min<std::size_t>(kRotationLanes, n - first));
+    Vec3 momentum_body[kRotationLanes];
+    for (int k = 0; k < count; ++k) {
+      const std::size_t b = first + std::size_t(k);
+      Vec3& v = bodies.velocity[b];
+      if (kick.frame) v = kick.frame->coriolis_turn(v) + h * kick.frame->acceleration(bodies.position[b]);
+      v += h * (bodies.force[b] / bodies.mass[b] + kick.gravity);
+      bodies.position[b] += dt * v;
+      if (!kick.rotate) continue;
       Vec3& L = bodies.angular_momentum[b];
       L += h * bodies.torque[b];
       // The free rotation keeps L in the space frame; only the orientation changes (and L's
       // body-frame components, which are not stored).
-      Vec3 momentum_body = rotate_inverse(bodies.orientation[b], L);
-      rotate_freely(bodies.orientation[b], momentum_body, bodies.principal_inertia[b], dt);
+      momentum_body[k] = rotate_inverse(bodies.orientation[b], L);
     }
-    // The members placed, with the rebuild criterion's displacements and the escape check.
+    if (kick.rotate)
+      rotate_freely_lanes(&bodies.orientation[first], momentum_body, &bodies.principal_inertia[first], dt, count);
+  }
+  // The members placed, with the rebuild criterion's displacements and the escape check: a loop of
+  // its own, so that the free rotations above (a long chain of dependent operations each) overlap
+  // from one body to the next.
+#pragma omp parallel for schedule(static) reduction(max : max_d2, hi_x, hi_y, hi_z) \
+    reduction(min : lo_x, lo_y, lo_z) reduction(| : outside)
+  for (std::size_t b = 0; b < n; ++b) {
+    const Vec3& v = bodies.velocity[b];
     const Rotation r(bodies.orientation[b]);
     const Vec3 w = spin_of(bodies, b, r);
     bodies.spin[b] = w;

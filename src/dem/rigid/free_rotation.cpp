@@ -1,5 +1,6 @@
 #include "dem/rigid/free_rotation.hpp"
 
+#include <algorithm>
 #include <cmath>
 
 namespace trapdem {
@@ -64,6 +65,94 @@ void rotate_freely(Quaternion& q, Vec3& momentum_body, const Vec3& inertia, doub
   // Renormalised against round-off: one division, the rest multiplications.
   const double scale = 1.0 / std::sqrt(q.w * q.w + q.x * q.x + q.y * q.y + q.z * q.z);
   q = {q.w * scale, q.x * scale, q.y * scale, q.z * scale};
+}
+
+namespace {
+
+// Series sin and cos, valid for |t| < 0.01 (step_sincos), without the branch: for the lanes.
+[[gnu::always_inline]] inline void series_sincos(double t, double& s, double& c) {
+  constexpr double k6 = 1.0 / 6.0, k20 = 1.0 / 20.0, k42 = 1.0 / 42.0;
+  constexpr double k12 = 1.0 / 12.0, k30 = 1.0 / 30.0, k56 = 1.0 / 56.0;
+  const double t2 = t * t;
+  s = t * (1.0 - t2 * k6 * (1.0 - t2 * k20 * (1.0 - t2 * k42)));
+  c = 1.0 - 0.5 * t2 * (1.0 - t2 * k12 * (1.0 - t2 * k30 * (1.0 - t2 * k56)));
+}
+
+// The lanes' state, one array per component (structure of arrays: one SIMD register each).
+struct Lanes {
+  double w[kRotationLanes], x[kRotationLanes], y[kRotationLanes], z[kRotationLanes];
+  double l[3][kRotationLanes];        // the angular momentum, body frame
+  double inverse[3][kRotationLanes];  // 1 / principal moment (0: none)
+};
+
+// rotate_about_body_axis<k> for every lane.
+template <int k>
+[[gnu::always_inline]] inline void rotate_lanes_about(Lanes& s, double h) {
+  constexpr int a = (k + 1) % 3, b = (k + 2) % 3;
+#pragma omp simd
+  for (int n = 0; n < kRotationLanes; ++n) {
+    const double theta = h * s.l[k][n] * s.inverse[k][n];
+    double hs, hc, sn, cs;
+    series_sincos(0.5 * theta, hs, hc);
+    series_sincos(theta, sn, cs);
+    const double w = s.w[n], x = s.x[n], y = s.y[n], z = s.z[n];
+    if constexpr (k == 0) {
+      s.w[n] = w * hc - x * hs; s.x[n] = x * hc + w * hs; s.y[n] = y * hc + z * hs; s.z[n] = z * hc - y * hs;
+    } else if constexpr (k == 1) {
+      s.w[n] = w * hc - y * hs; s.x[n] = x * hc - z * hs; s.y[n] = y * hc + w * hs; s.z[n] = z * hc + x * hs;
+    } else {
+      s.w[n] = w * hc - z * hs; s.x[n] = x * hc + y * hs; s.y[n] = y * hc - x * hs; s.z[n] = z * hc + w * hs;
+    }
+    const double la = s.l[a][n], lb = s.l[b][n];
+    s.l[a][n] = cs * la + sn * lb;
+    s.l[b][n] = -sn * la + cs * lb;
+  }
+}
+
+}  // namespace
+
+void rotate_freely_lanes(Quaternion* q, Vec3* momentum_body, const Vec3* inertia, double dt, int count) {
+  Lanes s{};
+  int lanes = 0;
+  int alone[kRotationLanes];  // the bodies that turn too far for the series: rotate_freely
+  int alone_count = 0;
+  for (int n = 0; n < count; ++n) {
+    const Vec3& I = inertia[n];
+    const Vec3 inverse{I.x > 0.0 ? 1.0 / I.x : 0.0, I.y > 0.0 ? 1.0 / I.y : 0.0, I.z > 0.0 ? 1.0 / I.z : 0.0};
+    // Every sub-rotation's angle is at most dt |L| / I_k (the body-frame components of L turn, its
+    // length does not).
+    const double largest = dt * norm(momentum_body[n]) * std::max({inverse.x, inverse.y, inverse.z});
+    if (!(largest < 1e-2)) {
+      alone[alone_count++] = n;
+      continue;
+    }
+    s.w[lanes] = q[n].w; s.x[lanes] = q[n].x; s.y[lanes] = q[n].y; s.z[lanes] = q[n].z;
+    for (int k = 0; k < 3; ++k) {
+      s.l[k][lanes] = momentum_body[n][k];
+      s.inverse[k][lanes] = inverse[k];
+    }
+    ++lanes;
+  }
+  // Unused lanes turn nothing (zero momentum, unit quaternion): harmless, and never read back.
+  for (int n = lanes; n < kRotationLanes; ++n) s.w[n] = 1.0;
+  rotate_lanes_about<2>(s, 0.5 * dt);
+  rotate_lanes_about<1>(s, 0.5 * dt);
+  rotate_lanes_about<0>(s, dt);
+  rotate_lanes_about<1>(s, 0.5 * dt);
+  rotate_lanes_about<2>(s, 0.5 * dt);
+  int lane = 0;
+  for (int n = 0, next_alone = 0; n < count; ++n) {
+    if (next_alone < alone_count && alone[next_alone] == n) {
+      ++next_alone;
+      rotate_freely(q[n], momentum_body[n], inertia[n], dt);
+      continue;
+    }
+    const double scale = 1.0 / std::sqrt(s.w[lane] * s.w[lane] + s.x[lane] * s.x[lane] + s.y[lane] * s.y[lane] +
+                                         s.z[lane] * s.z[lane]);
+    q[n] = {s.w[lane] * scale, s.x[lane] * scale, s.y[lane] * scale, s.z[lane] * scale};
+    momentum_body[n] = {s.l[0][lane], s.l[1][lane], s.l[2][lane]};
+    ++lane;
+  }
 }
 
 Vec3 angular_velocity_space(const Quaternion& q, const Vec3& L, const Vec3& inertia) {
