@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <numbers>
+#include <numeric>
 #include <random>
 #include <vector>
 
@@ -56,18 +57,20 @@ ElementBox add_box_walls(Simulation& sim, const Vec3& lower, const Vec3& upper, 
   return box;
 }
 
-Particles random_gas(const SizeDistribution& sizes, double density, std::int64_t count, double solid_fraction,
-                     std::uint64_t seed, double& side) {
+Grains random_gas(const SizeDistribution& sizes, double density, const ParticleShape& shape, std::int64_t count,
+                  double solid_fraction, std::uint64_t seed, double& side) {
+  const double bounding = shape.bounding_ratio();  // 1 for spheres
   std::mt19937_64 rng(seed);
   std::vector<double> diameter(static_cast<std::size_t>(count));
   double vs = 0.0;
   for (double& d : diameter) {
     d = sizes.sample(rng);
-    vs += std::numbers::pi / 6.0 * d * d * d;
+    const double reach = bounding * d;
+    vs += std::numbers::pi / 6.0 * reach * reach * reach;
   }
   std::sort(diameter.begin(), diameter.end(), std::greater<>());
   side = std::cbrt(vs / solid_fraction);
-  const double dmax = diameter.front();
+  const double dmax = bounding * diameter.front();
   // Cells of the largest diameter: an overlap can only be with a sphere of the 27 cells around.
   const int nc = std::max(1, static_cast<int>(side / dmax));
   const double cell = side / nc;
@@ -76,10 +79,12 @@ Particles random_gas(const SizeDistribution& sizes, double density, std::int64_t
   std::vector<Vec3> centre;
   centre.reserve(diameter.size());
   std::uniform_real_distribution<double> unit01(0.0, 1.0);
-  Particles p;
+  Grains grains;
+  Particles& p = grains.particles;
   p.reserve(diameter.size());
+  std::int64_t next_member_id = 1;
   for (std::size_t k = 0; k < diameter.size(); ++k) {
-    const double r = 0.5 * diameter[k];
+    const double r = 0.5 * bounding * diameter[k];  // the bounding sphere's
     bool placed = false;
     for (int attempt = 0; attempt < 100000 && !placed; ++attempt) {
       const Vec3 x{r + (side - 2 * r) * unit01(rng), r + (side - 2 * r) * unit01(rng), r + (side - 2 * r) * unit01(rng)};
@@ -89,7 +94,7 @@ Particles random_gas(const SizeDistribution& sizes, double density, std::int64_t
         for (int j = std::max(0, cy - 1); j <= std::min(nc - 1, cy + 1) && free; ++j)
           for (int l = std::max(0, cz - 1); l <= std::min(nc - 1, cz + 1) && free; ++l)
             for (std::uint32_t o : grid[(static_cast<std::size_t>(i) * nc + j) * nc + l]) {
-              const double reach = r + 0.5 * diameter[o];
+              const double reach = r + 0.5 * bounding * diameter[o];
               if (norm2(centre[o] - x) < reach * reach) {
                 free = false;
                 break;
@@ -98,7 +103,15 @@ Particles random_gas(const SizeDistribution& sizes, double density, std::int64_t
       if (!free) continue;
       grid[(static_cast<std::size_t>(cx) * nc + cy) * nc + cz].push_back(static_cast<std::uint32_t>(k));
       centre.push_back(x);
-      p.add(static_cast<std::int64_t>(k) + 1, x, r, density);
+      if (shape.is_clump()) {
+        const double u1 = unit01(rng), u2 = unit01(rng), u3 = unit01(rng);
+        const ClumpTemplate grain = shape.clump->scaled_to(diameter[k]);
+        add_rigid_body(grains.bodies, p, static_cast<std::int64_t>(k) + 1, next_member_id, grain, density, x,
+                       uniform_orientation(u1, u2, u3));
+        next_member_id += static_cast<std::int64_t>(grain.members.size());
+      } else {
+        p.add(static_cast<std::int64_t>(k) + 1, x, r, density);
+      }
       placed = true;
     }
     if (!placed)
@@ -106,12 +119,14 @@ Particles random_gas(const SizeDistribution& sizes, double density, std::int64_t
                                         "fraction of {}: lower element.gas_solid_fraction",
                                         k + 1, count, solid_fraction));
   }
-  return p;
+  return grains;
 }
 
-double solid_volume(const Particles& p) {
+double solid_volume(const Simulation& sim) {
+  const RigidBodies& bodies = sim.bodies();
+  if (!bodies.empty()) return std::accumulate(bodies.volume.begin(), bodies.volume.end(), 0.0);
   double v = 0.0;
-  for (double r : p.radius) v += 4.0 / 3.0 * std::numbers::pi * r * r * r;
+  for (double r : sim.particles().radius) v += 4.0 / 3.0 * std::numbers::pi * r * r * r;
   return v;
 }
 

@@ -9,6 +9,8 @@
 #include "dem/contact_law.hpp"
 #include "dem/particles.hpp"
 #include "dem/simulation.hpp"
+#include "dem/rigid/rigid_bodies.hpp"
+#include "experiment/particle_shape.hpp"
 #include "experiment/size_distribution.hpp"
 
 namespace trapdem {
@@ -31,13 +33,20 @@ ContactLaw frictionless(const ContactLaw& law);
 // Adds the six planes bounding [lower, upper] to the simulation.
 ElementBox add_box_walls(Simulation& sim, const Vec3& lower, const Vec3& upper, const ContactLaw& wall_law);
 
-// `count` spheres with diameters drawn from `sizes` placed at random without overlap (random
-// sequential addition, largest first) in a cube sized for `solid_fraction` (well below the
-// ~0.38 at which random sequential addition jams). Returns the particles; `side` receives the
-// cube's side (m), the cube being [0, side]^3.
-Particles random_gas(const SizeDistribution& sizes, double density, std::int64_t count, double solid_fraction,
-                     std::uint64_t seed, double& side);
+// A specimen's grains: spheres (no bodies), or clumps (every particle a member of a body).
+struct Grains {
+  Particles particles;
+  RigidBodies bodies;
+};
 
-double solid_volume(const Particles& p);  // m^3
+// `count` grains of `shape` with (volume-equivalent) diameters drawn from `sizes` placed at random
+// without overlap (random sequential addition of their bounding spheres, largest first; a clump
+// in a uniformly random orientation) in a cube sized for the bounding spheres to fill
+// `solid_fraction` of it (well below the ~0.38 at which random sequential addition jams). `side`
+// receives the cube's side (m), the cube being [0, side]^3. Spheres draw as they always did.
+Grains random_gas(const SizeDistribution& sizes, double density, const ParticleShape& shape, std::int64_t count,
+                  double solid_fraction, std::uint64_t seed, double& side);
+
+double solid_volume(const Simulation& sim);  // m^3: of the spheres, or of the clumps' unions
 
 }  // namespace trapdem

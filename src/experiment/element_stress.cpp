@@ -21,8 +21,26 @@ Vec3 wall_stress(const Simulation& sim, const ElementBox& box) {
   return s;
 }
 
+namespace {
+
+// The point each particle's contacts are referred to in the stress sums: its centre, or for a
+// member of a clump its body's centre of mass. The average stress of bodies in equilibrium is
+// sum over contacts f (x) (x_c - X), X one point per body (Christoffersen, Mehrabadi & Nemat-Nasser
+// 1981): a member's own centre would add the moment sum f (x) (x_member - X) of its body's contacts.
+std::vector<Vec3> reference_points(const Simulation& sim) {
+  const Particles& p = sim.particles();
+  const RigidBodies& bodies = sim.bodies();
+  if (bodies.empty()) return p.position;
+  std::vector<Vec3> x(p.size());
+  for (std::size_t i = 0; i < p.size(); ++i) x[i] = bodies.position[bodies.body_of_particle[i]];
+  return x;
+}
+
+}  // namespace
+
 Stress3 love_weber_stress(const Simulation& sim, const ElementBox& box) {
   const Particles& p = sim.particles();
+  const std::vector<Vec3> x = reference_points(sim);
   const WallList& wl = sim.wall_candidates();
   const std::vector<Wall>& walls = sim.walls();
   const Vec3 o = box.centre(sim);
@@ -39,10 +57,10 @@ Stress3 love_weber_stress(const Simulation& sim, const ElementBox& box) {
         const Vec3& f = wl.force[k];
         if (f == Vec3{}) continue;  // a candidate not touching
         pair_force -= f;
-        add(f, p.position[i] - wall_proximity(walls[wl.wall[k]], p.position[i]).point);
+        add(f, x[i] - wall_proximity(walls[wl.wall[k]], p.position[i]).point);
       }
     }
-    add(pair_force, p.position[i] - o);
+    add(pair_force, x[i] - o);
   }
   const double v = box.volume(sim);
   for (auto& row : s)
@@ -75,6 +93,7 @@ Stress3 interior_contact_stress(const Simulation& sim, const ElementBox& box, do
   const LawParams params = law_params(law, law);
   const Domain& domain = sim.settings().domain;
   const PairList pairs = sim.pairs();
+  const std::vector<Vec3> x = reference_points(sim);
   Stress3 s{};
   for (std::size_t i = 0; i + 1 < pairs.first.size(); ++i) {
     for (std::uint32_t k = pairs.first[i]; k < pairs.first[i + 1]; ++k) {
@@ -97,8 +116,10 @@ Stress3 interior_contact_stress(const Simulation& sim, const ElementBox& box, do
       const double c_n = RestitutionDamping::normal_coefficient(params.damping, effective_mass, r.damping_stiffness);
       const double fn = r.elastic_force - c_n * dot(p.velocity[i] - p.velocity[j], n);
       const Vec3 f = fn * n - r.tangential_stiffness * pairs.history[k].tangential_spring;
+      // From j's reference point to i's: the centres, or the bodies' for members of clumps.
+      const Vec3 arm = domain.minimum_image(x[i] - x[j]);
       for (int a = 0; a < 3; ++a)
-        for (int b = 0; b < 3; ++b) s[a][b] += f[a] * branch[b];
+        for (int b = 0; b < 3; ++b) s[a][b] += f[a] * arm[b];
     }
   }
   for (auto& row : s)

@@ -36,7 +36,8 @@ using Stress3 = std::array<std::array<double, 3>, 3>;  // Pa, compression positi
 Vec3 wall_stress(const Simulation& sim, const ElementBox& box);
 // One wall's normal stress (Pa, compression positive).
 double wall_normal_stress(const Simulation& sim, const ElementBox& box, int axis, int side);
-// The Love-Weber stress tensor over the box volume (Pa, compression positive), of the last step's forces.
+// The Love-Weber stress tensor over the box volume (Pa, compression positive), of the last step's forces;
+// a clump's contacts referred to its centre of mass (Christoffersen et al. 1981), not its members'.
 Stress3 love_weber_stress(const Simulation& sim, const ElementBox& box);
 
 // The contact stress of the specimen's interior (Pa, compression positive): Love's sum over the

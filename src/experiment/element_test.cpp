@@ -48,11 +48,13 @@ ContactLaw preparation_law(const ContactLaw& law, Packing packing) {
 }
 
 double rms_velocity(const Simulation& sim) {
-  return std::sqrt(2.0 * sim.translational_kinetic_energy() / sim.particles().total_mass());
+  return std::sqrt(2.0 * sim.translational_kinetic_energy() / sim.total_mass());
 }
 
+// Contacts per grain: per sphere, or per clump (a clump's members' contacts with other clumps).
 double coordination_number(const Simulation& sim) {
-  return sim.particles().empty() ? 0.0 : 2.0 * double(sim.contact_count()) / double(sim.particles().size());
+  const std::size_t grains = sim.bodies().empty() ? sim.particles().size() : sim.bodies().size();
+  return grains == 0 ? 0.0 : 2.0 * double(sim.contact_count()) / double(grains);
 }
 
 Vec3 diagonal(const Stress3& s) { return {s[0][0], s[1][1], s[2][2]}; }
@@ -115,7 +117,7 @@ void equilibrate(ElementSpecimen& sp, const ElementSetup& setup, double max_spee
   iso.max_axis_error = 0.0;
   for (int a = 0; a < 3; ++a)
     iso.max_axis_error = std::max(iso.max_axis_error, std::fabs(iso.wall_stress[a] - sp.confining) / sp.confining);
-  iso.solid_fraction = solid_volume(sim.particles()) / sp.box.volume(sim);
+  iso.solid_fraction = solid_volume(sim) / sp.box.volume(sim);
   iso.void_ratio = 1.0 / iso.solid_fraction - 1.0;
   iso.steps += steps;
 }
@@ -124,7 +126,7 @@ void equilibrate(ElementSpecimen& sp, const ElementSetup& setup, double max_spee
 // its frictionless compression). Contact histories start empty: without friction they held no
 // tangential or rolling spring.
 std::unique_ptr<Simulation> with_law(const Simulation& old, const ContactLaw& law) {
-  auto sim = std::make_unique<Simulation>(old.particles(), law, old.settings());
+  auto sim = std::make_unique<Simulation>(old.particles(), law, old.settings(), old.bodies());
   sim->set_gravity(Vec3{});
   for (Wall w : old.walls()) {
     w.force = Vec3{};
@@ -142,12 +144,13 @@ ElementSpecimen prepare_specimen(const ElementSetup& setup, Packing packing, dou
     throw InputError(fmt::format("element test: confining stress {} Pa: expected a stress > 0 (Pa)", confining));
   const ElementSettings& e = setup.settings;
   double side = 0.0;
-  Particles gas = random_gas(setup.material.sizes, setup.material.density, e.particles, e.gas_solid_fraction, e.seed, side);
+  Grains gas = random_gas(setup.material.sizes, setup.material.density, setup.material.shape, e.particles,
+                          e.gas_solid_fraction, e.seed, side);
   ElementSpecimen sp;
   sp.packing = packing;
   sp.confining = confining;
-  sp.sim = std::make_unique<Simulation>(std::move(gas), preparation_law(setup.material.particle, packing),
-                                        simulation_settings(setup, side));
+  sp.sim = std::make_unique<Simulation>(std::move(gas.particles), preparation_law(setup.material.particle, packing),
+                                        simulation_settings(setup, side), std::move(gas.bodies));
   sp.sim->set_gravity(Vec3{});  // an element of soil: no body force
   sp.box = add_box_walls(*sp.sim, Vec3{}, Vec3{side, side, side}, frictionless(setup.material.particle));
 
@@ -158,8 +161,9 @@ ElementSpecimen prepare_specimen(const ElementSetup& setup, Packing packing, dou
   // steps at the cap; twenty times that bounds the whole stage.
   const auto max_steps = static_cast<std::int64_t>(20.0 * 0.25 / (rate * setup.time_step)) + 40 * kWindowSteps;
   if (log)
-    log(fmt::format("{} specimen at {:.4g} Pa: {} particles, gas side {:.2f} mm, compression at <= {:.3g} 1/s",
-                    to_string(packing), confining, sp.sim->particles().size(), side * 1e3, rate));
+    log(fmt::format("{} specimen at {:.4g} Pa: {} {}, gas side {:.2f} mm, compression at <= {:.3g} 1/s",
+                    to_string(packing), confining, sp.sim->bodies().empty() ? sp.sim->particles().size() : sp.sim->bodies().size(),
+                    sp.sim->bodies().empty() ? "particles" : "clumps", side * 1e3, rate));
   equilibrate(sp, setup, max_speed, max_steps, log);
   if (packing == Packing::dense) {
     sp.sim = with_law(*sp.sim, setup.material.particle);
