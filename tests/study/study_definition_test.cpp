@@ -6,6 +6,9 @@
 #include <filesystem>
 #include <fstream>
 
+#include <fmt/format.h>
+#include <fmt/ranges.h>
+
 #include "core/errors.hpp"
 #include "core/text_escape.hpp"
 #include "io/config.hpp"
@@ -189,6 +192,16 @@ TEST(StudyDefinition, TheSeedLawStudyIsThePaperStudyWithBlazeDemsLaw) {
   ASSERT_EQ(seed.cases.size(), ours.cases.size());
   for (std::size_t k = 0; k < seed.cases.size(); ++k) {
     for (const StudyScale& scale : seed.scales) {
+      const std::vector<std::string>& set = scale.base.overrides;
+      if (std::any_of(set.begin(), set.end(), [](const std::string& o) { return o.starts_with("packing.from="); })) {
+        // A scale that starts from another study's deposit resolves only once that deposit exists
+        // (not in a fresh clone): its law is checked in its overrides.
+        for (const char* o : {"contact.tangential_model=\"blaze_tresca\"", "contact.rolling_model=\"angular_damping\"",
+                              "contact.damping_model=\"restitution_blaze\"", "contact.reference_time_step=2e-08"})
+          EXPECT_NE(std::find(set.begin(), set.end(), std::string(o)), set.end())
+              << scale.name << ": " << o << " among " << fmt::format("{}", fmt::join(set, " "));
+        continue;
+      }
       Config c = Config::parse(resolved_case_configuration(seed.cases[k], scale, app::preset_directory()), "study");
       EXPECT_EQ(c.require_value_text("contact.tangential_model"), "\"blaze_tresca\"") << scale.name;
       EXPECT_EQ(c.require_value_text("contact.rolling_model"), "\"angular_damping\"") << scale.name;
