@@ -244,10 +244,10 @@ void Simulation::step() {
   forces(fused_kick);
   if (with_bodies) {
     reduce_member_loads(state_.bodies, state_.particles);
-    const std::optional<FrameKick> frame =
-        frame_ ? std::optional<FrameKick>(FrameKick(*frame_, time_, 0.5 * dt_)) : std::nullopt;
-    const BodyKick kick = body_kick(frame ? &*frame : nullptr);
-    bad_particle_ = bodies_second_half_kick(state_.bodies, state_.particles, kick) ? first_non_finite_particle() : -1;
+    const std::optional<FrameKick> frame = frame_kick_now();
+    bad_particle_ = bodies_second_half_kick(state_.bodies, state_.particles, body_kick(frame ? &*frame : nullptr))
+                        ? first_non_finite_particle()
+                        : -1;
   } else if (!fused_kick) {
     bad_particle_ = kick_owned() ? first_non_finite_particle() : -1;  // second half kick
   }
@@ -328,6 +328,11 @@ PairList Simulation::pairs() const {
   return copy;
 }
 
+std::optional<FrameKick> Simulation::frame_kick_now() const {
+  if (!frame_) return std::nullopt;
+  return FrameKick(*frame_, time_, 0.5 * dt_);
+}
+
 BodyKick Simulation::body_kick(const FrameKick* frame) const {
   return {gravity(), 0.5 * dt_, !settings_.freeze_rotation, spin_retention(law_, dt_), frame};
 }
@@ -338,8 +343,7 @@ void Simulation::integrate_positions() {
   // and will be rebuilt anyway.
   const bool track = lists_valid_ && state_.lists.position_at_build.size() == p.size();
   if (!state_.bodies.empty()) {
-    const std::optional<FrameKick> frame =
-        frame_ ? std::optional<FrameKick>(FrameKick(*frame_, time_, 0.5 * dt_)) : std::nullopt;
+    const std::optional<FrameKick> frame = frame_kick_now();
     const DriftReport drift = bodies_first_half_kick_and_drift(
         state_.bodies, p, body_kick(frame ? &*frame : nullptr),
         track ? state_.lists.position_at_build.data() : nullptr, settings_.domain);

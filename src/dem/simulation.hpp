@@ -4,6 +4,7 @@
 #include <cstdint>
 #include <functional>
 #include <memory>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -169,6 +170,7 @@ class Simulation {
  private:
   void integrate_positions();
   BodyKick body_kick(const FrameKick* frame) const;  // this step's half kick of the bodies
+  std::optional<FrameKick> frame_kick_now() const;   // the rotating frame's half kick at the current time, if any
   void check_bodies_allowed(const char* what) const;  // one process, no periodic axis
   // Whether a pair or particle-wall contact could form unlisted before the next build, given the
   // displacements of every particle (on ranks, of all the ranks' particles).
