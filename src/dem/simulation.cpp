@@ -411,9 +411,9 @@ void Simulation::rebuild_lists() {
   ++rebuilds_since_reorder_;
   if (reorder) {
     p.permute(cells.order);
+    if (!state_.bodies.empty()) state_.bodies.follow_particle_permutation(cells.order);
     cells = in_cell_order(std::move(cells));
   }
-  if (!state_.bodies.empty()) state_.bodies.locate_members(p.id);
   if (decomposition_) {
     state_.ghosts = decomposition_->exchange_ghosts(p, cell);
     if (state_.ghosts > 0) cells = sort_into_cells(p.position, dom, cell);

@@ -44,6 +44,79 @@ void RigidBodies::locate_members(const std::vector<std::int64_t>& particle_id) {
                                         "member of one (a lone sphere: a body of one member)", particle_id[i]));
 }
 
+namespace {
+
+template <class T>
+void permute_bodies(std::vector<T>& values, const std::vector<std::uint32_t>& body_order) {
+  std::vector<T> moved(values.size());
+  for (std::size_t b = 0; b < body_order.size(); ++b) moved[b] = values[body_order[b]];
+  values.swap(moved);
+}
+
+}  // namespace
+
+void RigidBodies::follow_particle_permutation(const std::vector<std::uint32_t>& order) {
+  const std::size_t n_particles = order.size();
+  std::vector<std::uint32_t> now_at(n_particles);
+  for (std::size_t i = 0; i < n_particles; ++i) now_at[order[i]] = std::uint32_t(i);
+  for (std::uint32_t& i : member_particle) i = now_at[i];
+
+  // The bodies by their first member's place (each particle is one body's: the keys are distinct).
+  const std::size_t n = size();
+  std::vector<std::uint32_t> key(n);
+  bool sorted = true;
+  for (std::size_t b = 0; b < n; ++b) {
+    std::uint32_t first = ~0u;
+    for (std::uint32_t m = first_member[b]; m < first_member[b + 1]; ++m) first = std::min(first, member_particle[m]);
+    key[b] = first;
+    sorted = sorted && (b == 0 || key[b - 1] < first);
+  }
+  if (!sorted) {
+    std::vector<std::uint32_t> body_order(n);
+    std::iota(body_order.begin(), body_order.end(), 0u);
+    std::sort(body_order.begin(), body_order.end(), [&](std::uint32_t a, std::uint32_t b) { return key[a] < key[b]; });
+    permute_bodies(id, body_order);
+    permute_bodies(mass, body_order);
+    permute_bodies(volume, body_order);
+    permute_bodies(principal_inertia, body_order);
+    permute_bodies(position, body_order);
+    permute_bodies(velocity, body_order);
+    permute_bodies(orientation, body_order);
+    permute_bodies(angular_momentum, body_order);
+    permute_bodies(force, body_order);
+    permute_bodies(torque, body_order);
+    if (spin.size() == n) permute_bodies(spin, body_order);
+    // The members' arrays, body by body in the new order.
+    const bool with_arms = arm.size() == member_count();
+    std::vector<std::uint32_t> new_first(n + 1, 0);
+    std::vector<std::int64_t> new_member_id;
+    std::vector<Vec3> new_offset, new_arm;
+    std::vector<std::uint32_t> new_particle;
+    new_member_id.reserve(member_count());
+    new_offset.reserve(member_count());
+    new_particle.reserve(member_count());
+    if (with_arms) new_arm.reserve(member_count());
+    for (std::size_t b = 0; b < n; ++b) {
+      const std::uint32_t was = body_order[b];
+      for (std::uint32_t m = first_member[was]; m < first_member[was + 1]; ++m) {
+        new_member_id.push_back(member_id[m]);
+        new_offset.push_back(member_offset[m]);
+        new_particle.push_back(member_particle[m]);
+        if (with_arms) new_arm.push_back(arm[m]);
+      }
+      new_first[b + 1] = std::uint32_t(new_member_id.size());
+    }
+    first_member.swap(new_first);
+    member_id.swap(new_member_id);
+    member_offset.swap(new_offset);
+    member_particle.swap(new_particle);
+    if (with_arms) arm.swap(new_arm);
+  }
+  body_of_particle.assign(n_particles, kNoBody);
+  for (std::size_t b = 0; b < n; ++b)
+    for (std::uint32_t m = first_member[b]; m < first_member[b + 1]; ++m) body_of_particle[member_particle[m]] = std::uint32_t(b);
+}
+
 void RigidBodies::clear() { *this = RigidBodies{}; }
 
 std::size_t add_rigid_body(RigidBodies& bodies, Particles& particles, std::int64_t body_id,

@@ -63,6 +63,14 @@ struct RigidBodies {
   // SimulationError when a member is missing or a particle belongs to no body.
   void locate_members(const std::vector<std::int64_t>& particle_id);
 
+  // After the particles were permuted (Particles::permute(order): the particle now at i was at
+  // order[i]): the derived arrays follow the permutation (no search), and the bodies are put in
+  // the order of their first member, so that the body loops (body_motion.cpp) walk the particle
+  // arrays about in order and a thread's block of bodies holds about the members of its block of
+  // particles. Every per-body array and the members' arrays move with their body; nothing a step
+  // computes depends on the bodies' order.
+  void follow_particle_permutation(const std::vector<std::uint32_t>& order);
+
   void clear();
 };
 
