@@ -8,14 +8,17 @@
 #   trapdem-clumps shape=dimer bodies=4440 members=8880 threads=1 Mbody-steps/s=1.23 Mmember-steps/s=2.46
 #   lammps-rigid N=8880 bodies=4440 ranks=1 Mmember-steps/s=0.61   # contacts/member settled=... timed=... reps=3
 #   ratio trapdem-clumps/lammps-rigid N=8880 threads=1 = 4.03
-# The repetitions are the outer loop (as bench/run-bench.sh): each round runs trapdem once (it
-# settles, then times every thread count) and LAMMPS once per rank count, so that a slow spell of a
-# shared host falls on all cases alike. Every process settles its own bed (neither code restarts).
+# Each process settles its own bed once (neither code restarts), then times REPS runs of STEPS
+# steps one after another (trapdem --reps, LAMMPS -var TIMED) and reports their median; settling
+# takes ~95 % of a process's time, so the repetitions cost little. ROUNDS repeats the whole (each
+# round runs trapdem once, then LAMMPS once per rank count, so that a slow spell of a shared host
+# falls on all cases alike) and the summary takes the median round.
 # Usage: bash bench/run-clumps.sh [BUILD]
-# Env: REPS (3), WIDTH (0.1 m), SETTLE (80000: the top layers land after ~55 000 steps), STEPS (2000), THREADS ("1 2"), BENCH_DATA (logs go
+# Env: REPS (3), ROUNDS (1), WIDTH (0.1 m), SETTLE (80000: the top layers land after ~55 000 steps), STEPS (2000), THREADS ("1 2"), BENCH_DATA (logs go
 #      to BENCH_DATA/clumps, default BUILD/bench-data/clumps).
 source "$(dirname "$0")/common.sh"
 REPS=${REPS:-3}
+ROUNDS=${ROUNDS:-1}
 WIDTH=${WIDTH:-0.1}
 SETTLE=${SETTLE:-80000}
 STEPS=${STEPS:-2000}
@@ -30,11 +33,11 @@ WORK="$DATA/clumps"
 mkdir -p "$WORK"
 RUNS="$WORK/runs.tsv"   # case, threads, rep, Mmember-steps/s, the case's other fields
 : > "$RUNS"
-echo "bench-clumps: W=$WIDTH settle=$SETTLE steps=$STEPS threads/ranks=\"$THREADS\" reps=$REPS; logs in $WORK" >&2
+echo "bench-clumps: W=$WIDTH settle=$SETTLE steps=$STEPS threads/ranks=\"$THREADS\" reps=$REPS rounds=$ROUNDS; logs in $WORK" >&2
 
-for rep in $(seq 1 "$REPS"); do
+for rep in $(seq 1 "$ROUNDS"); do
   out="$WORK/trapdem_r$rep.txt"
-  if ! "$EXE" --shape dimer --width "$WIDTH" --settle "$SETTLE" --steps "$STEPS" --reps 1 --threads "$THREADS" > "$out"; then
+  if ! "$EXE" --shape dimer --width "$WIDTH" --settle "$SETTLE" --steps "$STEPS" --reps "$REPS" --threads "$THREADS" > "$out"; then
     echo "bench-clumps: trapdem failed (rep=$rep); see $out" >&2; exit 1
   fi
   # "# dimer: ... dt 2.813e-07 s; after K settling steps: 0.41 contacts per member, ..."
@@ -50,21 +53,22 @@ for rep in $(seq 1 "$REPS"); do
     rm -rf "$dir"; mkdir -p "$dir"
     pre=""; [ "$T" -gt 1 ] && pre="$MPIRUN -np $T"
     if ! (cd "$dir" && $pre lmp -in "$INPUT_DIR/in.dimers.lammps" -var HERE "$INPUT_DIR" -var W "$WIDTH" \
-            -var SETTLE "$SETTLE" -var NSTEPS "$STEPS" -log log.lammps -screen none > stdout.txt 2>&1); then
+            -var SETTLE "$SETTLE" -var NSTEPS "$STEPS" -var TIMED "$REPS" -log log.lammps -screen none > stdout.txt 2>&1); then
       tail -5 "$dir/log.lammps" >&2; echo "bench-clumps: LAMMPS failed (ranks=$T rep=$rep); see $dir" >&2; exit 1
     fi
     python3 - "$dir/log.lammps" "$STEPS" "$T" "$rep" >> "$RUNS" <<'PY'
-import re, sys
+import re, statistics, sys
 log, steps, ranks, rep = sys.argv[1], int(sys.argv[2]), sys.argv[3], sys.argv[4]
 t = open(log, errors="replace").read()
 loops = [(float(s), int(n), int(a)) for s, n, a in
          re.findall(r"Loop time of ([0-9.eE+-]+) on \d+ procs for (\d+) steps with (\d+) atoms", t)]
-loop, _, atoms = [l for l in loops if l[1] == steps][-1]   # the timed run: the last of STEPS steps
+timed_runs = [l for l in loops if l[1] == steps]   # those of STEPS steps
+loop, atoms = statistics.median_high(l[0] for l in timed_runs), timed_runs[0][2]   # the median rate's
 settled = re.search(r"^settled: .*contacts_per_member=([0-9.]+)", t, re.M).group(1)
 timed = re.search(r"^timed: .*contacts_per_member=([0-9.]+)", t, re.M).group(1)
 dims = re.search(r"^dimers: .* bodies=(\d+) dt=(\S+)", t, re.M)
 print(f"lammps\t{ranks}\t{rep}\t{atoms * steps / loop / 1e6:.4f}\t{settled}\t{dims.group(2)}\t"
-      f"N={atoms} bodies={dims.group(1)} timed={timed} loop_s={loop:.4f}")
+      f"N={atoms} bodies={dims.group(1)} timed={timed} loop_s={loop:.4f} runs={len(timed_runs)}")
 PY
   done
 done
@@ -95,7 +99,7 @@ for t in threads:
         rate, zpm, _, rest = median_run(lr)
         n, bodies, timed, _ = rest.split(" ", 3)
         print(f"lammps-rigid {n} {bodies} ranks={t} Mmember-steps/s={rate:.3f}   "
-              f"# contacts/member settled={zpm:.3f} {timed} reps={len(lr)}")
+              f"# contacts/member settled={zpm:.3f} {timed} rounds={len(lr)}")
     if tr and lr:
         print(f"ratio trapdem-clumps/lammps-rigid {n} threads={t} = {median_run(tr)[0] / rate:.2f}")
 PY
