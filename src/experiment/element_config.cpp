@@ -1,12 +1,36 @@
 #include "experiment/element_config.hpp"
 
+#include <algorithm>
 #include <cmath>
+#include <cstdlib>
 
 #include <fmt/format.h>
 
 #include "io/config.hpp"
 
 namespace trapdem {
+
+std::string to_string(const Packing& packing) {
+  switch (packing.kind) {
+    case PackingKind::dense: return "dense";
+    case PackingKind::loose: return "loose";
+    case PackingKind::preparation_friction: break;
+  }
+  return fmt::format("mu_prep={:g}", packing.friction);
+}
+
+std::optional<Packing> packing_from_name(std::string_view name) {
+  if (name == "dense") return Packing::dense;
+  if (name == "loose") return Packing::loose;
+  constexpr std::string_view prefix = "mu_prep=";
+  if (name.substr(0, prefix.size()) != prefix) return std::nullopt;
+  const std::string number(name.substr(prefix.size()));
+  char* end = nullptr;
+  const double friction = std::strtod(number.c_str(), &end);
+  if (number.empty() || end != number.c_str() + number.size() || !(friction >= 0.0 && friction <= 10.0))
+    return std::nullopt;
+  return Packing::prepared_with_friction(friction);
+}
 
 const char* to_string(ElementTestKind kind) { return kind == ElementTestKind::biaxial ? "biaxial" : "triaxial"; }
 
@@ -36,6 +60,19 @@ ElementSetup read_element_setup(Config& c) {
   e.gas_solid_fraction = t.get_double("gas_solid_fraction", e.gas_solid_fraction, "", Range::open_closed(0.0, 0.35));
   e.interior_margin = t.get_double("interior_margin", e.interior_margin, "mean diameters", Range::non_negative());
   e.seed = static_cast<std::uint64_t>(t.get_int("seed", 1, Range::non_negative()));
+  std::vector<std::string> default_names;
+  for (const Packing& packing : e.packings) default_names.push_back(to_string(packing));
+  e.packings.clear();
+  for (const std::string& name : t.get_vector<std::string>("packings", default_names)) {
+    const std::optional<Packing> packing = packing_from_name(name);
+    if (!packing)
+      throw t.error("packings", fmt::format("\"dense\", \"loose\" or \"mu_prep=X\" with X a friction coefficient in "
+                                            "[0, 10] (the compression's); got \"{}\"", name));
+    if (std::find(e.packings.begin(), e.packings.end(), *packing) != e.packings.end())
+      throw t.error("packings", fmt::format("each packing once; \"{}\" is named twice", name));
+    e.packings.push_back(*packing);
+  }
+  if (e.packings.empty()) throw t.error("packings", "at least one packing");
 
   if (!c.is_table("particles"))
     throw InputError(fmt::format("{}: no [particles] table: the element test takes the particles (density, size) "

@@ -4,7 +4,9 @@
 // [contact] (read by ExperimentConfig, not parsed again). The test's own keys live in an optional
 // [element] table of the same document and are read strictly (docs/element.md lists them).
 #include <cstdint>
+#include <optional>
 #include <string>
+#include <string_view>
 #include <vector>
 
 #include "experiment/experiment_config.hpp"
@@ -18,6 +20,33 @@ enum class ElementTestKind {
   triaxial,  // axisymmetric stresses: the x and y walls hold the confining stress
 };
 const char* to_string(ElementTestKind kind);
+
+// How the specimen's density is set: the isotropic compression from the gas runs with the
+// particles' friction and rolling resistance switched off (dense: the spheres slide into a close
+// packing), on (loose: the friction holds the first contacts' open structure), or with the
+// friction set to a chosen preparation value and no rolling resistance (in between: the density
+// grows as the preparation friction falls; Thornton 2000, Salot et al. 2009). The dense and the
+// in-between specimens then get their real contact law and are brought to equilibrium again at
+// the same stress.
+enum class PackingKind { dense, loose, preparation_friction };
+struct Packing {
+  PackingKind kind = PackingKind::dense;
+  double friction = 0.0;  // the compression's contact friction coefficient (preparation_friction only)
+  static const Packing dense;
+  static const Packing loose;
+  static Packing prepared_with_friction(double friction) { return {PackingKind::preparation_friction, friction}; }
+  friend bool operator==(const Packing& a, const Packing& b) {
+    return a.kind == b.kind && (a.kind != PackingKind::preparation_friction || a.friction == b.friction);
+  }
+};
+inline constexpr Packing Packing::dense{PackingKind::dense, 0.0};
+inline constexpr Packing Packing::loose{PackingKind::loose, 0.0};
+// "dense", "loose" or "mu_prep=0.1" (element.csv's and element.json's packing column).
+std::string to_string(const Packing& packing);
+
+// The packing a name gives ("dense", "loose", "mu_prep=X" with X a friction coefficient in
+// [0, 10]); nullopt for any other text.
+std::optional<Packing> packing_from_name(std::string_view name);
 
 struct ElementSettings {
   ElementTestKind kind = ElementTestKind::biaxial;
@@ -38,7 +67,10 @@ struct ElementSettings {
   // The interior whose contact stress element.csv also gives: the box less this many mean
   // diameters along every wall (docs/element.md: the walls' layers).
   double interior_margin = 2.0;
-  std::uint64_t seed = 1;                  // placement of the gas (dense and loose share it)
+  std::uint64_t seed = 1;                  // placement of the gas (every specimen's)
+  // The specimens prepared at each confining stress, in this order ("dense", "loose",
+  // "mu_prep=0.2"): the preparation friction sets a specimen's density, hence its peak angle.
+  std::vector<Packing> packings{Packing::dense, Packing::loose};
 };
 
 // What the element test needs: its settings and the run configuration's material and numerics.

@@ -34,7 +34,8 @@ std::vector<ElementAngles> element_angles(const ElementResult& result) {
     const SpecimenResult* loose = nullptr;
     for (const SpecimenResult& s : result.specimens) {
       if (s.confining != confining) continue;
-      (s.packing == Packing::dense ? dense : loose) = &s;
+      if (s.packing == Packing::dense) dense = &s;
+      if (s.packing == Packing::loose) loose = &s;
     }
     if (!dense || !loose) continue;
     out.push_back({confining, dense->phi_peak, 0.5 * (dense->phi_cs + loose->phi_cs),

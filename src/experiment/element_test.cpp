@@ -11,7 +11,6 @@
 
 namespace trapdem {
 
-const char* to_string(Packing packing) { return packing == Packing::dense ? "dense" : "loose"; }
 
 namespace {
 
@@ -42,9 +41,18 @@ SimulationSettings simulation_settings(const ElementSetup& setup, double side) {
 }
 
 // The law the gas is compressed with: no friction and no rolling resistance for the dense
-// specimen, the particles' own for the loose one.
-ContactLaw preparation_law(const ContactLaw& law, Packing packing) {
-  return packing == Packing::loose ? law : frictionless(law);
+// specimen, the particles' own for the loose one, the preparation friction and no rolling
+// resistance for one in between.
+ContactLaw preparation_law(const ContactLaw& law, const Packing& packing) {
+  switch (packing.kind) {
+    case PackingKind::loose: return law;
+    case PackingKind::dense: return frictionless(law);
+    case PackingKind::preparation_friction: break;
+  }
+  ContactLaw prepared = frictionless(law);
+  prepared.static_friction = packing.friction;
+  prepared.kinetic_friction = packing.friction;
+  return prepared;
 }
 
 double rms_velocity(const Simulation& sim) {
@@ -122,9 +130,12 @@ void equilibrate(ElementSpecimen& sp, const ElementSetup& setup, double max_spee
   iso.steps += steps;
 }
 
-// The same particles and walls under another particle law (the dense specimen's real law after
-// its frictionless compression). Contact histories start empty: without friction they held no
-// tangential or rolling spring.
+// The same particles and walls under another particle law (the real law after a dense or an
+// in-between compression). Contact histories start empty: without friction they held no
+// tangential or rolling spring; after a compression with a preparation friction the tangential
+// springs it held are released, and the equilibrium that follows lets the contacts slip into
+// the real law's (the density set by the preparation friction is kept: the solid fraction is
+// measured after it).
 std::unique_ptr<Simulation> with_law(const Simulation& old, const ContactLaw& law) {
   auto sim = std::make_unique<Simulation>(old.particles(), law, old.settings(), old.bodies());
   sim->set_gravity(Vec3{});
@@ -139,7 +150,8 @@ std::unique_ptr<Simulation> with_law(const Simulation& old, const ContactLaw& la
 
 }  // namespace
 
-ElementSpecimen prepare_specimen(const ElementSetup& setup, Packing packing, double confining, const ElementLog& log) {
+ElementSpecimen prepare_specimen(const ElementSetup& setup, const Packing& packing, double confining,
+                                 const ElementLog& log) {
   if (!(confining > 0.0))
     throw InputError(fmt::format("element test: confining stress {} Pa: expected a stress > 0 (Pa)", confining));
   const ElementSettings& e = setup.settings;
@@ -165,7 +177,7 @@ ElementSpecimen prepare_specimen(const ElementSetup& setup, Packing packing, dou
                     to_string(packing), confining, sp.sim->bodies().empty() ? sp.sim->particles().size() : sp.sim->bodies().size(),
                     sp.sim->bodies().empty() ? "particles" : "clumps", side * 1e3, rate));
   equilibrate(sp, setup, max_speed, max_steps, log);
-  if (packing == Packing::dense) {
+  if (packing.kind != PackingKind::loose) {
     sp.sim = with_law(*sp.sim, setup.material.particle);
     equilibrate(sp, setup, max_speed, max_steps, log);  // adds its steps to the first one's
   }
@@ -359,7 +371,7 @@ ElementResult run_element_test(const ElementSetup& setup, const ElementLog& log)
   result.mean_diameter = setup.material.sizes.mean_diameter();
   result.time_step = setup.time_step;
   for (double confining : setup.settings.confining) {
-    for (Packing packing : {Packing::dense, Packing::loose}) {
+    for (const Packing& packing : setup.settings.packings) {
       ElementSpecimen sp = prepare_specimen(setup, packing, confining, log);
       result.specimens.push_back(shear_specimen(sp, setup, log));
     }

@@ -17,13 +17,6 @@
 
 namespace trapdem {
 
-// How the specimen's density is set: the isotropic compression from the gas runs with the
-// particles' friction and rolling resistance switched off (dense: the spheres slide into a close
-// packing) or on (loose: the friction holds the first contacts' open structure), after which the
-// dense specimen gets its real contact law and is brought to equilibrium again at the same stress.
-enum class Packing { dense, loose };
-const char* to_string(Packing packing);
-
 using ElementLog = std::function<void(const std::string&)>;
 // Called after every step of the shear with the specimen and its axial strain (tools and studies
 // that measure more than element.csv holds, e.g. the stress at several depths inside the walls).
@@ -89,11 +82,12 @@ struct ElementResult {
   ElementSettings settings;
   double mean_diameter = 0.0;      // m
   double time_step = 0.0;          // s
-  std::vector<SpecimenResult> specimens;  // per confining stress: dense, then loose
+  std::vector<SpecimenResult> specimens;  // per confining stress, element.packings in order
 };
 
 // The stages, for tests and tools; run_element_test chains them.
-ElementSpecimen prepare_specimen(const ElementSetup& setup, Packing packing, double confining, const ElementLog& log = {});
+ElementSpecimen prepare_specimen(const ElementSetup& setup, const Packing& packing, double confining,
+                                 const ElementLog& log = {});
 SpecimenResult shear_specimen(ElementSpecimen& specimen, const ElementSetup& setup, const ElementLog& log = {},
                               const ShearObserver& observe = {});
 ElementResult run_element_test(const ElementSetup& setup, const ElementLog& log = {});

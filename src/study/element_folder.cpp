@@ -81,10 +81,10 @@ ElementFolderResult run_element_in_folder(const ElementFolderOptions& o) {
 
   // "cs inside": phi'_cs from the contact stress of the interior (element.interior_margin inside
   // every wall), without the walls' layers (docs/element.md).
-  log(fmt::format("{:>14} {:>8} {:>10} {:>10} {:>10} {:>10} {:>10} {:>10}", "confining", "packing", "solid fr.",
+  log(fmt::format("{:>14} {:>12} {:>10} {:>10} {:>10} {:>10} {:>10} {:>10}", "confining", "packing", "solid fr.",
                   "phi'_peak", "phi'_cs", "cs inside", "psi_peak", "LW/wall"));
   for (const SpecimenResult& s : done.result.specimens)
-    log(fmt::format("{:>10.4g} kPa {:>8} {:>10.4f} {:>10.1f} {:>10.1f} {:>10.1f} {:>10.1f} {:>10.4f}", s.confining / 1e3,
+    log(fmt::format("{:>10.4g} kPa {:>12} {:>10.4f} {:>10.1f} {:>10.1f} {:>10.1f} {:>10.1f} {:>10.4f}", s.confining / 1e3,
                     to_string(s.packing), s.isotropic.solid_fraction, s.phi_peak, s.phi_cs, s.phi_cs_interior,
                     s.psi_peak, s.isotropic.love_weber_mean() / s.isotropic.wall_mean()));
   done.angles = element_angles(done.result);
