@@ -11,6 +11,7 @@
 
 #include "core/errors.hpp"
 #include "core/text_escape.hpp"
+#include "experiment/experiment_config.hpp"
 #include "io/config.hpp"
 #include "run_command.hpp"
 #include "study/study_definition.hpp"
@@ -221,6 +222,41 @@ TEST(StudyDefinition, TheSeedLawStudyIsThePaperStudyWithBlazeDemsLaw) {
                             "pluviation.count", "trapdoor.rate", "trapdoor.travel", "spin_up.g_level"})
       EXPECT_EQ(blaze.require_value_text(key), textbook.require_value_text(key)) << seed.cases[k].name << " " << key;
   }
+}
+
+// The shape study (issue 39): three materials at one scale, each a valid run configuration; the
+// beads and the rolling case are paper-table2's Calibrated and RF3 at the demo scale, the dimers
+// the same box and law but for their shape, mu 0.5 and no rolling resistance.
+TEST(StudyDefinition, TheShapeStudyIsBeadsRollingResistanceAndDimersInOneBox) {
+  const fs::path studies = fs::path(TRAPDEM_SOURCE_DIR) / "studies";
+  const StudyDefinition shape = load_study(studies / "shape.toml");
+  const StudyDefinition table2 = load_study(studies / "paper-table2.toml");
+  ASSERT_EQ(shape.cases.size(), 3u);
+  for (const StudyScale& scale : shape.scales) {
+    for (const StudyCase& c : shape.cases) {
+      Config config = Config::parse(resolved_case_configuration(c, scale, app::preset_directory()), c.name);
+      const ExperimentConfig run = ExperimentConfig::from(config);  // throws on any invalid key
+      EXPECT_EQ(run.material.shape.is_clump(), c.name == "dimers") << c.name << " at " << scale.name;
+    }
+  }
+  const StudyScale& demo = shape.scale("demo-seeds");
+  EXPECT_EQ(demo.replicates.count, 3);
+  auto resolved = [&](const StudyDefinition& s, std::size_t k, const StudyScale& scale) {
+    return Config::parse(resolved_case_configuration(s.cases[k], scale, app::preset_directory()), "study");
+  };
+  Config beads = resolved(shape, 0, demo), rolling = resolved(shape, 1, demo), dimers = resolved(shape, 2, demo);
+  Config calibrated = resolved(table2, 0, table2.scale("demo")), rf3 = resolved(table2, 3, table2.scale("demo"));
+  for (const char* key : {"contact.static_friction", "contact.kinetic_friction", "contact.rolling_friction",
+                          "contact.rolling_model", "contact.normal_stiffness", "box.width", "pluviation.count",
+                          "particles.min_diameter", "trapdoor.travel"}) {
+    EXPECT_EQ(beads.require_value_text(key), calibrated.require_value_text(key)) << key;
+    EXPECT_EQ(rolling.require_value_text(key), rf3.require_value_text(key)) << key;
+  }
+  EXPECT_EQ(dimers.require_value_text("contact.kinetic_friction"), "0.5");
+  EXPECT_EQ(dimers.require_value_text("contact.rolling_friction"), "0.0");
+  for (const char* key : {"contact.normal_stiffness", "contact.restitution", "box.width", "box.depth",
+                          "pluviation.count", "particles.min_diameter", "particles.max_diameter", "trapdoor.rate"})
+    EXPECT_EQ(dimers.require_value_text(key), calibrated.require_value_text(key)) << key;
 }
 
 // A relative packing.from under a case's `set` names a file beside the study file (as the scale's
