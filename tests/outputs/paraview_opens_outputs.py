@@ -1,7 +1,10 @@
 # Run by pvpython (ParaView's Python): opens a run folder's snapshots.xmf and analysis/fields.xmf as
 # a ParaView user would (OpenDataFile, the default representation) and checks what ParaView reads
 # against the HDF5 files read with h5py: points, cells, arrays and time steps.
-# Usage: pvpython paraview_opens_outputs.py RUN_DIR
+# Usage: pvpython paraview_opens_outputs.py RUN_DIR [--clumps]
+# With --clumps (a run of rigid clumps, make_tiny_clump_run.sh) every snapshot must also carry each
+# member sphere's `body`, which ParaView must read as a point array (colour by it to see the grains),
+# and the fields' nodes are the bodies.
 # Reading needs no rendering, so this runs without a display. Rendering does: Debian's ParaView is
 # built for X (GLX) only, so Render() without an X server crashes in XSync even with
 # --force-offscreen-rendering; this script never renders.
@@ -55,7 +58,7 @@ def check_default_view(reader, what):
     check(info.GetNumberOfCells() > 0, f"{what}: the default view has cells to show")
 
 
-def check_snapshots(run):
+def check_snapshots(run, clumps):
     xmf = os.path.join(run, "snapshots.xmf")
     reader = OpenDataFile(xmf)
     check(reader is not None, "snapshots.xmf opens")
@@ -79,6 +82,13 @@ def check_snapshots(run):
             same(vtk_to_numpy(data.GetPoints().GetData()), g["position"][:], f"{where}: points at the positions")
             for name in ("id", "radius", "velocity", "angular_velocity"):
                 same(point_array(data, name), g[name][:], f"{where}: {name}")
+            check(("body" in g) == clumps, f"{where}: a member's body {'present' if clumps else 'absent'}")
+            if clumps and "body" in g:
+                body = g["body"][:]
+                same(point_array(data, "body"), body, f"{where}: body")
+                ids = set(g["bodies/id"][:].tolist())
+                check(set(body.tolist()) == ids, f"{where}: every member's body is one of bodies/id and each has members")
+                check(len(ids) < n, f"{where}: {len(ids)} bodies of {n} member spheres")
 
 
 def check_fields(run):
@@ -104,7 +114,9 @@ def check_fields(run):
 
 
 run = os.path.abspath(sys.argv[1])
-check_snapshots(run)
+clumps = sys.argv[2:] == ["--clumps"]
+check(sys.argv[2:] in ([], ["--clumps"]), f"arguments: RUN_DIR [--clumps], got {sys.argv[1:]}")
+check_snapshots(run, clumps)
 check_fields(run)
 if failures:
     print(f"{len(failures)} checks failed")
