@@ -195,14 +195,8 @@ double Simulation::critical_time_step() const {
     // A contact force on a member turns its body too (contact_time_scale_mass), at most at the
     // farthest reach of a member's surface.
     for (std::size_t b = 0; b < bodies.size(); ++b) {
-      double reach = 0.0, smallest_radius = std::numeric_limits<double>::infinity();
-      for (std::uint32_t m = bodies.first_member[b]; m < bodies.first_member[b + 1]; ++m) {
-        const double r = p.radius[bodies.member_particle[m]];
-        reach = std::max(reach, norm(bodies.member_offset[m]) + r);
-        smallest_radius = std::min(smallest_radius, r);
-      }
-      const double mass = contact_time_scale_mass(bodies.mass[b], bodies.principal_inertia[b], reach);
-      t = std::min(t, trapdem::critical_time_step(law_, wall_laws, mass, smallest_radius));
+      const BodyContactScale scale = body_contact_scale(bodies, p, b);
+      t = std::min(t, trapdem::critical_time_step(law_, wall_laws, scale.mass, scale.smallest_radius));
     }
     return t;
   }

@@ -181,13 +181,31 @@ void read_packing_keys(Config& c, PackingConfig& p) {
 // The packing file read and checked (after its keys passed): the sizes the box's margins, skin
 // and time step are derived from become the packing's, and the critical step its smallest.
 void load_packing(Config& c, ExperimentConfig& e) {
-  PackingParticles read = read_packing(e.packing, e.box, e.material.density, e.numerics.max_overlap_fraction);
+  PackingParticles read =
+      read_packing(e.packing, e.box, e.material.density, e.numerics.max_overlap_fraction, e.material.shape);
   const Particles& p = read.particles;
-  const auto [lo, hi] = std::minmax_element(p.radius.begin(), p.radius.end());
-  e.material.sizes = *lo == *hi ? SizeDistribution::single(2.0 * *lo) : SizeDistribution::uniform(2.0 * *lo, 2.0 * *hi);
+  const RigidBodies& bodies = read.bodies;
   double critical = std::numeric_limits<double>::infinity();
-  for (std::size_t i = 0; i < p.size(); ++i)
-    critical = std::min(critical, trapdem::critical_time_step(e.material.particle, e.material.wall_laws(), p.mass[i], p.radius[i]));
+  double d_lo = std::numeric_limits<double>::infinity(), d_hi = 0.0;  // m, the grains' (volume-equivalent) diameters
+  if (bodies.empty()) {
+    for (std::size_t i = 0; i < p.size(); ++i) {
+      d_lo = std::min(d_lo, 2.0 * p.radius[i]);
+      d_hi = std::max(d_hi, 2.0 * p.radius[i]);
+      critical = std::min(critical, trapdem::critical_time_step(e.material.particle, e.material.wall_laws(), p.mass[i],
+                                                                p.radius[i]));
+    }
+  } else {  // as Simulation::critical_time_step
+    for (std::size_t b = 0; b < bodies.size(); ++b) {
+      const double d = std::cbrt(6.0 * bodies.volume[b] / std::numbers::pi);
+      d_lo = std::min(d_lo, d);
+      d_hi = std::max(d_hi, d);
+      const BodyContactScale scale = body_contact_scale(bodies, p, b);
+      critical = std::min(critical, trapdem::critical_time_step(e.material.particle, e.material.wall_laws(), scale.mass,
+                                                                scale.smallest_radius));
+    }
+    e.packing.bodies = std::make_shared<const RigidBodies>(std::move(read.bodies));
+  }
+  e.material.sizes = d_lo == d_hi ? SizeDistribution::single(d_lo) : SizeDistribution::uniform(d_lo, d_hi);
   e.packing.critical_time_step = critical;
   e.packing.particles = std::make_shared<const Particles>(std::move(read.particles));
   if (e.numerics.time_step > critical)
@@ -365,8 +383,6 @@ ExperimentConfig ExperimentConfig::from(Config& c) {
     if (e.box.periodic_depth)
       shape.fail("kind", "spheres with box.depth_boundary = \"periodic\" (clumps need walls on every side: a "
                          "clump's members would straddle the periodic boundary)");
-    if (c.has("packing"))
-      shape.fail("kind", "spheres with a [packing] (a packing is read as spheres; pour the clumps instead)");
   }
   if (e.material.sizes.max_diameter() * 3.0 > e.box.depth && !e.box.periodic_depth) {
     const char* size_key = particles.has("grading") ? "grading" : (particles.has("max_diameter") ? "max_diameter" : "diameter");

@@ -8,6 +8,7 @@
 
 #include "dem/contact_law.hpp"
 #include "dem/particles.hpp"
+#include "dem/rigid/rigid_bodies.hpp"
 #include "dem/vec3.hpp"
 #include "experiment/particle_shape.hpp"
 #include "experiment/size_distribution.hpp"
@@ -65,7 +66,10 @@ struct PackingConfig {
   bool start_at_spin_up = false; // start_stage = "spin_up" (else "settling")
   // Read and checked by ExperimentConfig::from (file order, shift applied); null without [packing].
   std::shared_ptr<const Particles> particles;
-  double critical_time_step = 0.0;  // s, the smallest over the packing's particles
+  // A packing of clumps (a trapdem snapshot of clumps, [particles.shape] the same shape): the
+  // bodies whose members `particles` are; null for spheres.
+  std::shared_ptr<const RigidBodies> bodies;
+  double critical_time_step = 0.0;  // s, the smallest over the packing's particles (grains)
 
   bool enabled() const { return !from.empty(); }
 };

@@ -51,8 +51,57 @@ PackingParticles from_dump(const PackingConfig& c, double default_density) {
   return out;
 }
 
+// Each body of a snapshot of clumps rebuilt from `shape` (read_packing_file explains). A member
+// of the snapshot is where the shape puts one when its offset from the centre of mass, turned into
+// the body frame, and its radius are the shape's to 1e-6 of the grain's diameter: the snapshot's
+// values are the engine's own placement (x = X + R c, rounding ~1e-16 m), so only another shape
+// or size misses by that much.
+void add_clumps(PackingParticles& out, const Snapshot& s, const std::string& where, const PackingConfig& c,
+                const ParticleShape& shape, double density) {
+  std::unordered_map<std::int64_t, std::vector<std::size_t>> rows_of;  // body id -> its member rows
+  for (std::size_t i = 0; i < s.size(); ++i) rows_of[s.body[i]].push_back(i);
+  std::int64_t next_member_id = 1;
+  for (std::size_t k = 0; k < s.bodies.size(); ++k) {
+    const std::int64_t body_id = s.bodies.id[k];
+    const double diameter = 2.0 * s.bodies.radius[k];
+    const ClumpTemplate grain = shape.clump->scaled_to(diameter);
+    const auto found = rows_of.find(body_id);
+    const std::size_t members = found == rows_of.end() ? 0 : found->second.size();
+    const std::string body = fmt::format("{}, body {} (volume-equivalent diameter {:.6g} m)", where, body_id, diameter);
+    if (members != grain.members.size())
+      throw InputError(fmt::format("{}: {} member spheres, where [particles.shape] ({}) has {}: the packing's clumps must "
+                                   "be of the configuration's shape",
+                                   body, members, shape.describe(), grain.members.size()));
+    const Quaternion& q = s.bodies.orientation[k];
+    const double tolerance = 1e-6 * diameter;
+    std::vector<char> matched(grain.members.size(), 0);
+    for (std::size_t i : found->second) {
+      const Vec3 offset = rotate_inverse(q, s.position[i] - s.bodies.position[k]);
+      bool placed = false;
+      for (std::size_t m = 0; m < grain.members.size() && !placed; ++m) {
+        if (matched[m] || norm(offset - grain.members[m].centre) > tolerance ||
+            std::fabs(s.radius[i] - grain.members[m].radius) > tolerance)
+          continue;
+        matched[m] = 1;
+        placed = true;
+      }
+      if (!placed)
+        throw InputError(fmt::format("{}: its member sphere {} (row {}, radius {:.6g} m) is at ({:.6g}, {:.6g}, {:.6g}) m "
+                                     "in the body frame, where [particles.shape] ({}) has no member: the packing's "
+                                     "clumps must be of the configuration's shape",
+                                     body, s.id[i], i, s.radius[i], offset.x, offset.y, offset.z, shape.describe()));
+    }
+    const std::size_t first = out.particles.size();
+    add_rigid_body(out.bodies, out.particles, body_id, next_member_id, grain, density, s.bodies.position[k] + c.shift,
+                   q, s.bodies.velocity[k], s.bodies.angular_velocity[k]);
+    next_member_id += std::int64_t(grain.members.size());
+    for (std::size_t i = first; i < out.particles.size(); ++i)
+      out.origin.push_back(fmt::format("{}, body {} member {}", where, body_id, i - first));
+  }
+}
+
 // `from` is a snapshots.h5 or the run folder holding one.
-PackingParticles from_snapshot(const PackingConfig& c, double default_density) {
+PackingParticles from_snapshot(const PackingConfig& c, double default_density, const ParticleShape& shape) {
   fs::path h5 = c.from;
   if (fs::is_directory(h5)) h5 /= "snapshots.h5";
   if (!fs::exists(h5))
@@ -66,15 +115,24 @@ PackingParticles from_snapshot(const PackingConfig& c, double default_density) {
                                  "(or no packing.snapshot: the last)", h5.string(), c.snapshot, n, n - 1));
   const SnapshotInfo& info = list[std::size_t(c.snapshot < 0 ? n - 1 : c.snapshot)];
   const Snapshot s = read_snapshot(h5, info.name);
-  if (!s.bodies.empty())
-    throw InputError(fmt::format("{} snapshot {}: a snapshot of {} clumps; a [packing] is read as spheres, and a "
-                                 "clump's member spheres are not (docs/config.md, [particles.shape]): pour the "
-                                 "clumps instead", h5.string(), info.name, s.bodies.size()));
+  const std::string where = fmt::format("{} snapshot {}", h5.string(), info.name);
+  if (!s.bodies.empty() && !shape.is_clump())
+    throw InputError(fmt::format("{}: a snapshot of {} clumps, and [particles.shape] is spheres: set [particles.shape] "
+                                 "to the clumps' shape (docs/config.md), from which each clump is rebuilt",
+                                 where, s.bodies.size()));
+  if (s.bodies.empty() && shape.is_clump())
+    throw InputError(fmt::format("{}: a snapshot of spheres, and [particles.shape] is {}: a packing of clumps is a "
+                                 "trapdem snapshot of clumps of that shape (or pour the clumps: no [packing])",
+                                 where, shape.describe()));
   PackingParticles out;
   out.particles.reserve(s.size());
+  if (shape.is_clump()) {
+    add_clumps(out, s, where, c, shape, default_density);
+    return out;
+  }
   for (std::size_t i = 0; i < s.size(); ++i)
     add_particle(out, s.id[i], s.position[i] + c.shift, s.radius[i], default_density, s.velocity[i],
-                 s.angular_velocity[i], fmt::format("{} snapshot {}, row {}", h5.string(), info.name, i));
+                 s.angular_velocity[i], fmt::format("{}, row {}", where, i));
   return out;
 }
 
@@ -104,7 +162,7 @@ std::string outside_box(const Vec3& x, double r, const BoxConfig& box, double fr
 
 }  // namespace
 
-PackingParticles read_packing_file(const PackingConfig& c, double default_density) {
+PackingParticles read_packing_file(const PackingConfig& c, double default_density, const ParticleShape& shape) {
   // A device or a pipe (/dev/zero, a FIFO) would be read without end: only files (and, for a
   // trapdem run, its folder) are packings.
   std::error_code ec;
@@ -112,9 +170,13 @@ PackingParticles read_packing_file(const PackingConfig& c, double default_densit
   if (fs::exists(status) && !fs::is_regular_file(status) && !(c.format == "trapdem" && fs::is_directory(status)))
     throw InputError(fmt::format("packing.from = \"{}\": not a regular file; expected a {} file", c.from,
                                  c.format == "trapdem" ? "snapshots.h5 (or a run folder)" : c.format));
+  if (shape.is_clump() && c.format != "trapdem")
+    throw InputError(fmt::format("packing.format = \"{}\" with [particles.shape] {}: a packing of clumps is a trapdem "
+                                 "snapshot of clumps of that shape (format = \"trapdem\"); a {} file holds spheres",
+                                 c.format, shape.describe(), c.format));
   if (c.format == "lammps-data") return from_lammps_data(c);
   if (c.format == "lammps-dump") return from_dump(c, default_density);
-  if (c.format == "trapdem") return from_snapshot(c, default_density);
+  if (c.format == "trapdem") return from_snapshot(c, default_density, shape);
   throw InputError(fmt::format("packing.format = \"{}\": expected \"lammps-data\", \"lammps-dump\" or \"trapdem\"", c.format));
 }
 
@@ -151,6 +213,7 @@ std::vector<std::string> packing_violations(const PackingParticles& packing, con
     r_max = std::max(r_max, r);
   }
 
+  const std::vector<std::uint32_t>& body_of = packing.bodies.body_of_particle;  // empty: spheres
   // Pairs: a cell grid of cells at least 2 r_max wide, particles counted into cells.
   Domain domain;
   domain.lower = {0.0, 0.0, 0.0};
@@ -181,6 +244,7 @@ std::vector<std::string> packing_violations(const PackingParticles& packing, con
           const std::uint32_t b = order[s];
           if (b <= a) continue;
           const std::size_t i = index[a], j = index[b];
+          if (!body_of.empty() && body_of[i] == body_of[j]) continue;  // one clump's members overlap by design
           const Vec3 d = domain.minimum_image(p.position[j] - p.position[i]);
           const double overlap = p.radius[i] + p.radius[j] - std::sqrt(dot(d, d));
           const double smaller = std::min(p.radius[i], p.radius[j]);
@@ -198,8 +262,8 @@ std::vector<std::string> packing_violations(const PackingParticles& packing, con
 }
 
 PackingParticles read_packing(const PackingConfig& c, const BoxConfig& box, double default_density,
-                              double max_overlap_fraction) {
-  PackingParticles packing = read_packing_file(c, default_density);
+                              double max_overlap_fraction, const ParticleShape& shape) {
+  PackingParticles packing = read_packing_file(c, default_density, shape);
   if (packing.particles.empty())
     throw InputError(fmt::format("{}: the packing holds no particle; expected at least one", c.from));
   const std::vector<std::string> violations = packing_violations(packing, box, max_overlap_fraction);

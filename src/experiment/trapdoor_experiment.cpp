@@ -44,7 +44,8 @@ TrapdoorExperiment::TrapdoorExperiment(ExperimentConfig config) : config_(std::m
   s.domain = strongbox_domain(config_);
   s.max_overlap_fraction = config_.numerics.max_overlap_fraction;
   sim_ = std::make_unique<Simulation>(config_.packing.particles ? *config_.packing.particles : Particles{},
-                                      config_.material.particle, s);
+                                      config_.material.particle, s,
+                                      config_.packing.bodies ? *config_.packing.bodies : RigidBodies{});
   for (Wall& w : strongbox_walls_for(config_)) sim_->add_wall(std::move(w));
   trapdoor_wall_ = sim_->find_wall(strongbox_walls::trapdoor);
   base_left_wall_ = sim_->find_wall(strongbox_walls::base_left);

@@ -8,6 +8,7 @@
 #include <cmath>
 #include <filesystem>
 #include <fstream>
+#include <map>
 #include <set>
 #include <string>
 #include <vector>
@@ -439,4 +440,80 @@ TEST(PackingStart, TheDocsExampleStartsFromTheTinyPresetsOwnDeposit) {
   EXPECT_NE(low_log.find("stand above the box's height (45.0 mm): a run started from this deposit needs box.height >="),
             std::string::npos)
       << low_log;
+}
+
+// A run of dimers (particles.shape) whose settled snapshot starts another run of the same dimers
+// (issue 39): every clump rebuilt at its centre of mass and orientation, its members where the
+// snapshot has them (to 1e-12 m: the engine places members by a rotation matrix, the packing by
+// the quaternion, two roundings of ~1e-17 m), the second run complete with the same bodies. A
+// configuration of another shape or of spheres is refused naming the body or the snapshot, and so
+// is a clump configuration with a file of spheres.
+TEST(PackingStart, AClumpRunsSnapshotStartsARunOfTheSameClumps) {
+  omp_set_num_threads(1);
+  const ScratchDir scratch("trapdem-packing-clumps");
+  const fs::path& dir = scratch.path();
+  const std::vector<std::string> dimers = {"particles.shape.kind=\"dimer\"", "particles.shape.aspect=1.5"};
+  std::vector<std::string> pour = {"pluviation.fill_height=0.02", "settling.max_time=0.02", "spin_up.ramp_time=0.005",
+                                   "trapdoor.travel=0.0005", "output.snapshot_displacements=[0.0]"};
+  pour.insert(pour.end(), dimers.begin(), dimers.end());
+  const fs::path first = dir / "first";
+  ASSERT_TRUE(run_folder(pour, first));
+  const auto snaps = list_snapshots(first / "snapshots.h5");
+  ASSERT_GE(snaps.size(), 2u);
+  ASSERT_EQ(snaps[1].stage, "settling");
+  const Snapshot settled = read_snapshot(first / "snapshots.h5", snaps[1].name);
+  ASSERT_FALSE(settled.bodies.empty());
+
+  std::vector<std::string> again = short_run(first.string(), "trapdem");
+  again.push_back("packing.snapshot=1");
+  std::vector<std::string> again_dimers = again;
+  again_dimers.insert(again_dimers.end(), dimers.begin(), dimers.end());
+  const ExperimentConfig c = config_with(again_dimers);
+  ASSERT_TRUE(c.packing.bodies);
+  const RigidBodies& bodies = *c.packing.bodies;
+  const Particles& members = *c.packing.particles;
+  ASSERT_EQ(bodies.size(), settled.bodies.size());
+  ASSERT_EQ(members.size(), settled.size());
+  std::map<std::int64_t, std::size_t> row_of_body;
+  for (std::size_t k = 0; k < settled.bodies.size(); ++k) row_of_body[settled.bodies.id[k]] = k;
+  double worst = 0.0;
+  for (std::size_t b = 0; b < bodies.size(); ++b) {
+    const std::size_t k = row_of_body.at(bodies.id[b]);
+    EXPECT_EQ(bodies.position[b], settled.bodies.position[k]);
+    EXPECT_EQ(bodies.velocity[b], settled.bodies.velocity[k]);
+    // Each member at one of the snapshot's members of that body.
+    for (std::uint32_t m = bodies.first_member[b]; m < bodies.first_member[b + 1]; ++m) {
+      double nearest = 1.0;
+      for (std::size_t i = 0; i < settled.size(); ++i)
+        if (settled.body[i] == bodies.id[b])
+          nearest = std::min(nearest, norm(members.position[bodies.member_particle[m]] - settled.position[i]));
+      worst = std::max(worst, nearest);
+    }
+  }
+  EXPECT_LT(worst, 1e-12);
+  EXPECT_GT(c.packing.critical_time_step, 0.0);
+  EXPECT_NEAR(c.material.sizes.mean_diameter(), 0.004, 0.0005) << "the grains' volume-equivalent sizes";
+
+  const fs::path second = dir / "second";
+  ASSERT_TRUE(run_folder(again_dimers, second));
+  const auto snaps2 = list_snapshots(second / "snapshots.h5");
+  const Snapshot start = read_snapshot(second / "snapshots.h5", snaps2.front().name);
+  EXPECT_EQ(snaps2.front().stage, "packing");
+  EXPECT_EQ(ids_of(start.bodies.id), ids_of(settled.bodies.id));
+  EXPECT_TRUE(Json::parse(read_text_file(second / "run.json"), "run.json")["complete"].as_bool());
+
+  std::vector<std::string> other_shape = again;
+  other_shape.insert(other_shape.end(), {"particles.shape.kind=\"dimer\"", "particles.shape.aspect=1.2"});
+  const std::string wrong = error_of(other_shape);
+  EXPECT_NE(wrong.find("snapshot 000001, body "), std::string::npos) << wrong;
+  EXPECT_NE(wrong.find("must be of the configuration's shape"), std::string::npos) << wrong;
+  const std::string spheres = error_of(again);
+  EXPECT_NE(spheres.find(fmt::format("a snapshot of {} clumps", settled.bodies.size())), std::string::npos) << spheres;
+  EXPECT_NE(spheres.find("[particles.shape]"), std::string::npos) << spheres;
+
+  write_lammps_data((dir / "bed.data").string(), lattice(2), {0, 0, 0}, {0.08, 0.014, 0.045});
+  std::vector<std::string> data = short_run((dir / "bed.data").string(), "lammps-data");
+  data.insert(data.end(), dimers.begin(), dimers.end());
+  const std::string from_data = error_of(data);
+  EXPECT_NE(from_data.find("a packing of clumps is a trapdem snapshot of clumps"), std::string::npos) << from_data;
 }

@@ -1,6 +1,7 @@
 #include "dem/rigid/rigid_bodies.hpp"
 
 #include <algorithm>
+#include <limits>
 #include <numeric>
 
 #include <fmt/format.h>
@@ -166,6 +167,16 @@ std::size_t add_rigid_body(RigidBodies& bodies, Particles& particles, std::int64
 double contact_time_scale_mass(double mass, const Vec3& inertia, double reach) {
   const double least = std::min({inertia.x, inertia.y, inertia.z});
   return std::min(mass, least / (reach * reach));
+}
+
+BodyContactScale body_contact_scale(const RigidBodies& bodies, const Particles& particles, std::size_t b) {
+  double reach = 0.0, smallest_radius = std::numeric_limits<double>::infinity();
+  for (std::uint32_t m = bodies.first_member[b]; m < bodies.first_member[b + 1]; ++m) {
+    const double r = particles.radius[bodies.member_particle[m]];
+    reach = std::max(reach, norm(bodies.member_offset[m]) + r);
+    smallest_radius = std::min(smallest_radius, r);
+  }
+  return {contact_time_scale_mass(bodies.mass[b], bodies.principal_inertia[b], reach), smallest_radius};
 }
 
 void exclude_pairs_within_bodies(PairList& pairs, const std::vector<std::uint32_t>& body_of_particle) {

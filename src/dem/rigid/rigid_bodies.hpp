@@ -90,6 +90,16 @@ std::size_t add_rigid_body(RigidBodies& bodies, Particles& particles, std::int64
 // T = 2 pi sqrt(I / (k reach^2))); the smaller of that and the body's mass.
 double contact_time_scale_mass(double mass, const Vec3& principal_inertia, double reach);
 
+// What sets body b's critical step (Simulation::critical_time_step): a contact force on a member
+// turns the body too, at most at the farthest reach of a member's surface from the centre of mass
+// (contact_time_scale_mass), on the stiffness of its smallest member. The members' radii are
+// `particles`' (the derived member_particle current).
+struct BodyContactScale {
+  double mass = 0.0;             // kg
+  double smallest_radius = 0.0;  // m
+};
+BodyContactScale body_contact_scale(const RigidBodies& bodies, const Particles& particles, std::size_t b);
+
 // Removes the pairs of two members of one body from a half list (pair_list.hpp) whose particles'
 // bodies `body_of_particle` gives: a body's members do not touch each other.
 struct PairList;
