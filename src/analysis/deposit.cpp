@@ -59,6 +59,7 @@ ContactCensus contact_census(const Snapshot& s, const DepositSettings& settings,
           if (it == cells.end()) continue;
           for (std::uint32_t j : it->second) {
             if (j <= i) continue;
+            if (!s.body.empty() && s.body[i] == s.body[j]) continue;  // one clump's members overlap by design
             Vec3 d = xi - s.position[j];
             if (settings.periodic_depth) d.y -= settings.box_depth * std::round(d.y / settings.box_depth);
             const double reach = s.radius[i] + s.radius[j];
@@ -76,35 +77,79 @@ ContactCensus contact_census(const Snapshot& s, const DepositSettings& settings,
   return census;
 }
 
+// A snapshot of clumps (or of spheres: itself) as its grains for the volumes, weights and counts
+// (grain_view: one sphere of the grain's volume at its centre of mass), with each grain's contacts
+// with other grains summed from its members'.
+struct Grains {
+  Snapshot view;
+  std::vector<int> contacts;  // per grain
+};
+
+Grains grains_of(const Snapshot& s, const std::vector<int>& member_contacts) {
+  if (s.bodies.empty()) return {s, member_contacts};
+  Grains g{grain_view(s), std::vector<int>(s.bodies.size(), 0)};
+  std::unordered_map<std::int64_t, std::size_t> row_of;
+  for (std::size_t k = 0; k < s.bodies.size(); ++k) row_of[s.bodies.id[k]] = k;
+  for (std::size_t i = 0; i < s.size(); ++i) {
+    const auto it = row_of.find(s.body[i]);
+    if (it == row_of.end())
+      throw InputError(fmt::format("deposit: particle {} is a member of body {}, which the snapshot does not hold",
+                                   s.id[i], s.body[i]));
+    g.contacts[it->second] += member_contacts[i];
+  }
+  return g;
+}
+
 }  // namespace
 
-DepositMetrics measure_deposit(const Snapshot& s, const DepositSettings& settings) {
-  const std::size_t n = s.size();
-  if (n == 0) throw InputError("deposit: the snapshot holds no particles");
+DepositMetrics measure_deposit(const Snapshot& members, const DepositSettings& settings) {
+  if (members.size() == 0) throw InputError("deposit: the snapshot holds no particles");
   if (!(settings.box_width > 0.0) || !(settings.box_depth > 0.0))
     throw InputError(fmt::format("deposit: box width and depth must be > 0 m (got {} x {})", settings.box_width,
                                  settings.box_depth));
-  DepositMetrics m;
-  m.particles = int(n);
-  double d_sum = 0.0, r_max = 0.0, top = 0.0;
-  for (std::size_t i = 0; i < n; ++i) {
-    const Vec3 x = s.position[i];
+  double r_max = 0.0, top = 0.0;  // m, of the particles (a clump's members)
+  for (std::size_t i = 0; i < members.size(); ++i) {
+    const Vec3 x = members.position[i];
     if (!(x.x >= 0.0 && x.x <= settings.box_width && x.y >= 0.0 && x.y <= settings.box_depth))
       throw InputError(fmt::format("deposit: particle {} at x = {} m, y = {} m lies outside the box {} x {} m",
-                                   s.id[i], x.x, x.y, settings.box_width, settings.box_depth));
-    d_sum += 2.0 * s.radius[i];
-    r_max = std::max(r_max, s.radius[i]);
-    top = std::max(top, x.z + s.radius[i]);
+                                   members.id[i], x.x, x.y, settings.box_width, settings.box_depth));
+    r_max = std::max(r_max, members.radius[i]);
+    top = std::max(top, x.z + members.radius[i]);
   }
+  // Contacts between particles of different grains, found among the particles.
+  const ContactCensus census = contact_census(members, settings, 2.0 * r_max);
+  // Counts are the grains': spheres, or clumps by their centre of mass. Volumes and weights are
+  // the members' spheres, each scaled by its clump's union volume over the sum of its members'
+  // volumes (their overlaps would count twice): a clump's volume and weight are exact, and lie
+  // where its members are, up to how the overlap lens is spread among them.
+  const Grains grains = grains_of(members, census.per_particle);
+  std::vector<double> volume_scale(members.size(), 1.0);
+  if (!members.bodies.empty()) {
+    std::unordered_map<std::int64_t, double> member_volume;  // body id -> sum of its members' spheres
+    for (std::size_t i = 0; i < members.size(); ++i)
+      member_volume[members.body[i]] += 4.0 / 3.0 * std::numbers::pi * std::pow(members.radius[i], 3);
+    std::unordered_map<std::int64_t, double> scale;
+    for (std::size_t k = 0; k < members.bodies.size(); ++k)
+      scale[members.bodies.id[k]] =
+          4.0 / 3.0 * std::numbers::pi * std::pow(members.bodies.radius[k], 3) / member_volume[members.bodies.id[k]];
+    for (std::size_t i = 0; i < members.size(); ++i) volume_scale[i] = scale[members.body[i]];
+  }
+  const Snapshot& s = grains.view;
+  const std::size_t n = s.size();
+  DepositMetrics m;
+  m.particles = int(n);
+  double d_sum = 0.0;
+  for (std::size_t i = 0; i < n; ++i) d_sum += 2.0 * s.radius[i];
   const double d = d_sum / double(n);
   m.mean_diameter = d;
 
   // The surface: the highest top in each column two mean diameters wide (Cartesian x), averaged.
   const int columns = std::max(1, int(settings.box_width / (2.0 * d)));
   std::vector<double> column_top(std::size_t(columns), -1.0);
-  for (std::size_t i = 0; i < n; ++i) {
-    const int c = std::min(columns - 1, int(s.position[i].x / settings.box_width * columns));
-    column_top[std::size_t(c)] = std::max(column_top[std::size_t(c)], s.position[i].z + s.radius[i]);
+  for (std::size_t i = 0; i < members.size(); ++i) {  // the particles' tops: the surface as it is
+    const Vec3& x = members.position[i];
+    const int c = std::min(columns - 1, int(x.x / settings.box_width * columns));
+    column_top[std::size_t(c)] = std::max(column_top[std::size_t(c)], x.z + members.radius[i]);
   }
   double sum = 0.0;
   int filled = 0;
@@ -119,8 +164,7 @@ DepositMetrics measure_deposit(const Snapshot& s, const DepositSettings& setting
     if (t >= 0.0) spread += (t - m.surface_height) * (t - m.surface_height);
   m.surface_roughness = std::sqrt(spread / filled);
 
-  const ContactCensus census = contact_census(s, settings, 2.0 * r_max);
-  const std::vector<int>& contacts = census.per_particle;
+  const std::vector<int>& contacts = grains.contacts;
   m.contacts = census.contacts;
   m.mean_overlap = census.contacts > 0 ? census.overlap_sum / double(census.contacts) : 0.0;
   m.max_overlap = census.overlap_max;
@@ -131,9 +175,13 @@ DepositMetrics measure_deposit(const Snapshot& s, const DepositSettings& setting
     double volume = 0.0;
     long contact_sum = 0;
     int in_layer = 0, loose = 0;
+    for (std::size_t i = 0; i < members.size(); ++i) {
+      const double zc = members.position[i].z, r = members.radius[i];
+      if (zc + r > a && zc - r < b)
+        volume += volume_scale[i] * (sphere_volume_below(zc, r, b) - sphere_volume_below(zc, r, a));
+    }
     for (std::size_t i = 0; i < n; ++i) {
-      const double zc = s.position[i].z, r = s.radius[i];
-      if (zc + r > a && zc - r < b) volume += sphere_volume_below(zc, r, b) - sphere_volume_below(zc, r, a);
+      const double zc = s.position[i].z;
       if (zc >= a && zc < b) {
         ++in_layer;
         contact_sum += contacts[i];
@@ -148,19 +196,20 @@ DepositMetrics measure_deposit(const Snapshot& s, const DepositSettings& setting
     if (rattlers) *rattlers = in_layer > 0 ? double(loose) / in_layer : 0.0;
   };
 
-  // The weight above the plane z = a per plan area: each sphere's part above it, at its centre's
-  // acceleration (the acceleration varies over a diameter by d/R of itself, < 1e-3 in a centrifuge).
+  // The weight above the plane z = a per plan area: each sphere's part above it (a member's
+  // scaled as its volume is), at its centre's acceleration (the acceleration varies over a
+  // diameter by d/R of itself, < 1e-3 in a centrifuge).
   const bool stress = settings.solid_density > 0.0 && static_cast<bool>(settings.downward_acceleration);
-  std::vector<double> weight_factor;  // rho a_down(x_i), N/m^3
+  std::vector<double> weight_factor;  // rho a_down(x_i) x the volume scale, N/m^3
   if (stress) {
-    weight_factor.resize(n);
-    for (std::size_t i = 0; i < n; ++i)
-      weight_factor[i] = settings.solid_density * settings.downward_acceleration(s.position[i]);
+    weight_factor.resize(members.size());
+    for (std::size_t i = 0; i < members.size(); ++i)
+      weight_factor[i] = volume_scale[i] * settings.solid_density * settings.downward_acceleration(members.position[i]);
   }
   auto geostatic_stress_at = [&](double a) {
     double weight = 0.0;  // N
-    for (std::size_t i = 0; i < n; ++i) {
-      const double zc = s.position[i].z, r = s.radius[i];
+    for (std::size_t i = 0; i < members.size(); ++i) {
+      const double zc = members.position[i].z, r = members.radius[i];
       if (zc + r <= a) continue;
       const double whole = 4.0 / 3.0 * std::numbers::pi * r * r * r;
       weight += weight_factor[i] * (whole - sphere_volume_below(zc, r, a));

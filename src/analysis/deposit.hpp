@@ -57,6 +57,11 @@ struct DepositMetrics {
 };
 
 // Throws InputError for an empty snapshot, a box of no size or particles outside it in x or y.
+// A snapshot of clumps is measured by its grains: `particles`, the mean (volume-equivalent)
+// diameter, the coordination and rattlers per clump (by its centre of mass), counting the contacts
+// between members of different clumps only (a clump's own members overlap by design); the solid
+// fraction and the weights from the members' spheres, each scaled by its clump's union volume over
+// its members' summed volume (the overlaps would count twice); the surface of the members' tops.
 DepositMetrics measure_deposit(const Snapshot& snapshot, const DepositSettings& settings);
 
 // The volume (m^3) of a sphere of radius r centred at height zc that lies below the plane z = a:

@@ -146,3 +146,78 @@ TEST(Deposit, TheGeostaticStressNeedsADensityAndAnAcceleration) {
   EXPECT_NEAR(m.base_geostatic_stress / (nz * layer), 1.0, 1e-5);
   EXPECT_NEAR(m.profile[1].geostatic_stress / (5 * layer), 1.0, 1e-5);
 }
+
+namespace {
+
+// `snap` with its spheres paired along x into two-member bodies (spheres 2k and 2k + 1 of each row,
+// nx even), each body a sphere of `body_radius` at the pair's midpoint in the bodies' table.
+Snapshot paired_into_bodies(Snapshot snap, double body_radius) {
+  for (std::size_t i = 0; i < snap.size(); i += 2) {
+    const std::int64_t body = 1000 + std::int64_t(i / 2);
+    snap.body.push_back(body);
+    snap.body.push_back(body);
+    snap.bodies.id.push_back(body);
+    snap.bodies.position.push_back(0.5 * (snap.position[i] + snap.position[i + 1]));
+    snap.bodies.radius.push_back(body_radius);
+    snap.bodies.velocity.push_back({});
+    snap.bodies.orientation.push_back({});
+    snap.bodies.angular_velocity.push_back({});
+  }
+  return snap;
+}
+
+}  // namespace
+
+// A snapshot of clumps is measured by its grains (issue 39): one dimer of two spheres of radius r
+// whose centres are r apart, alone in its box: one grain, no contact (its members overlap by
+// design), its mean diameter the volume-equivalent one, and its weight the union's,
+// 2 (4/3 pi r^3) - 5 pi r^3 / 12 (the lens of two spheres of radius r at distance r is
+// pi (4 r + r)(2 r - r)^2 / 12): 27/32 of the members' sum. Exact up to round-off.
+TEST(Deposit, AClumpIsOneGrainOfItsUnionsVolumeWithoutContactsWithinIt) {
+  const double r = kRadius;
+  const double union_volume = 2.0 * 4.0 / 3.0 * std::numbers::pi * r * r * r - 5.0 * std::numbers::pi * r * r * r / 12.0;
+  const double r_eq = std::cbrt(3.0 * union_volume / (4.0 * std::numbers::pi));
+  Snapshot snap;
+  snap.id = {1, 2};
+  snap.position = {{0.005 - 0.5 * r, 0.002, r}, {0.005 + 0.5 * r, 0.002, r}};
+  snap.radius = {r, r};
+  snap.velocity.assign(2, Vec3{});
+  snap.angular_velocity.assign(2, Vec3{});
+  snap.image.assign(2, Int3{});
+  snap = paired_into_bodies(snap, r_eq);
+  DepositSettings settings;
+  settings.box_width = 0.01;
+  settings.box_depth = 0.004;
+  settings.solid_density = 1000.0;
+  settings.downward_acceleration = [](const Vec3&) { return 10.0; };
+  const DepositMetrics m = measure_deposit(snap, settings);
+  EXPECT_EQ(m.particles, 1);
+  EXPECT_EQ(m.contacts, 0);
+  EXPECT_EQ(m.max_overlap, 0.0);
+  EXPECT_NEAR(m.mean_diameter, 2.0 * r_eq, 1e-15);
+  EXPECT_NEAR(m.base_geostatic_stress, 1000.0 * 10.0 * union_volume / (0.01 * 0.004), 1e-9);
+  EXPECT_NEAR(m.surface_height, 2.0 * r, 1e-15) << "the members' tops";
+}
+
+// The simple cubic lattice with its spheres paired along x into bodies: every contact but the one
+// within each pair stays, and a grain counts its members' contacts with other grains. Over the
+// whole deposit (the bulk layer widened to all of it) the mean per grain is then exactly twice
+// the spheres' mean less 2.
+TEST(Deposit, AClumpsContactsAreItsMembersContactsWithOtherClumps) {
+  const int nx = 12, ny = 4, nz = 30;
+  const double squeeze = 1e-4, s = 2.0 * kRadius * (1.0 - squeeze);
+  DepositSettings settings;
+  settings.box_width = nx * s;
+  settings.box_depth = ny * s;
+  settings.base_margin = 0.0;
+  settings.surface_margin = -1.0;  // from the base to a diameter above the top: every grain
+  const Snapshot spheres = lattice(nx, ny, nz, squeeze);
+  const DepositMetrics as_spheres = measure_deposit(spheres, settings);
+  const Snapshot clumps = paired_into_bodies(spheres, std::cbrt(2.0) * kRadius);
+  const DepositMetrics m = measure_deposit(clumps, settings);
+  EXPECT_EQ(m.particles, nx * ny * nz / 2);
+  EXPECT_EQ(m.contacts, as_spheres.contacts - nx * ny * nz / 2);
+  EXPECT_DOUBLE_EQ(m.max_overlap, as_spheres.max_overlap);
+  EXPECT_NEAR(m.bulk_coordination, 2.0 * as_spheres.bulk_coordination - 2.0, 1e-12);
+  EXPECT_GT(m.bulk_coordination, 7.0);
+}
