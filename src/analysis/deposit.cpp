@@ -77,27 +77,19 @@ ContactCensus contact_census(const Snapshot& s, const DepositSettings& settings,
   return census;
 }
 
-// A snapshot of clumps (or of spheres: itself) as its grains for the volumes, weights and counts
-// (grain_view: one sphere of the grain's volume at its centre of mass), with each grain's contacts
-// with other grains summed from its members'.
-struct Grains {
-  Snapshot view;
-  std::vector<int> contacts;  // per grain
-};
-
-Grains grains_of(const Snapshot& s, const std::vector<int>& member_contacts) {
-  if (s.bodies.empty()) return {s, member_contacts};
-  Grains g{grain_view(s), std::vector<int>(s.bodies.size(), 0)};
+// Each particle's row among a snapshot of clumps' bodies (their grains, grain_view's rows).
+std::vector<std::size_t> grain_row_of_members(const Snapshot& s) {
   std::unordered_map<std::int64_t, std::size_t> row_of;
   for (std::size_t k = 0; k < s.bodies.size(); ++k) row_of[s.bodies.id[k]] = k;
+  std::vector<std::size_t> row(s.size());
   for (std::size_t i = 0; i < s.size(); ++i) {
     const auto it = row_of.find(s.body[i]);
     if (it == row_of.end())
       throw InputError(fmt::format("deposit: particle {} is a member of body {}, which the snapshot does not hold",
                                    s.id[i], s.body[i]));
-    g.contacts[it->second] += member_contacts[i];
+    row[i] = it->second;
   }
-  return g;
+  return row;
 }
 
 }  // namespace
@@ -118,24 +110,28 @@ DepositMetrics measure_deposit(const Snapshot& members, const DepositSettings& s
   }
   // Contacts between particles of different grains, found among the particles.
   const ContactCensus census = contact_census(members, settings, 2.0 * r_max);
-  // Counts are the grains': spheres, or clumps by their centre of mass. Volumes and weights are
-  // the members' spheres, each scaled by its clump's union volume over the sum of its members'
-  // volumes (their overlaps would count twice): a clump's volume and weight are exact, and lie
-  // where its members are, up to how the overlap lens is spread among them.
-  const Grains grains = grains_of(members, census.per_particle);
-  std::vector<double> volume_scale(members.size(), 1.0);
-  if (!members.bodies.empty()) {
-    std::unordered_map<std::int64_t, double> member_volume;  // body id -> sum of its members' spheres
-    for (std::size_t i = 0; i < members.size(); ++i)
-      member_volume[members.body[i]] += 4.0 / 3.0 * std::numbers::pi * std::pow(members.radius[i], 3);
-    std::unordered_map<std::int64_t, double> scale;
-    for (std::size_t k = 0; k < members.bodies.size(); ++k)
-      scale[members.bodies.id[k]] =
-          4.0 / 3.0 * std::numbers::pi * std::pow(members.bodies.radius[k], 3) / member_volume[members.bodies.id[k]];
-    for (std::size_t i = 0; i < members.size(); ++i) volume_scale[i] = scale[members.body[i]];
-  }
-  const Snapshot& s = grains.view;
+  // Counts are the grains': spheres, or clumps by their centre of mass (grain_view), each clump
+  // with its members' contacts. Volumes and weights are the members' spheres, each scaled by its
+  // clump's union volume over the sum of its members' volumes (their overlaps would count twice):
+  // a clump's volume and weight are exact, and lie where its members are, up to how the overlap
+  // lens is spread among them.
+  const bool clumps = !members.bodies.empty();
+  const Snapshot grain_storage = clumps ? grain_view(members) : Snapshot{};
+  const Snapshot& s = clumps ? grain_storage : members;
   const std::size_t n = s.size();
+  std::vector<int> contacts = census.per_particle;  // per grain
+  std::vector<double> volume_scale(members.size(), 1.0);
+  if (clumps) {
+    const std::vector<std::size_t> row = grain_row_of_members(members);
+    contacts.assign(n, 0);
+    std::vector<double> member_volume(n, 0.0);  // per grain: the sum of its members' spheres
+    for (std::size_t i = 0; i < members.size(); ++i) {
+      contacts[row[i]] += census.per_particle[i];
+      member_volume[row[i]] += 4.0 / 3.0 * std::numbers::pi * std::pow(members.radius[i], 3);
+    }
+    for (std::size_t i = 0; i < members.size(); ++i)
+      volume_scale[i] = 4.0 / 3.0 * std::numbers::pi * std::pow(s.radius[row[i]], 3) / member_volume[row[i]];
+  }
   DepositMetrics m;
   m.particles = int(n);
   double d_sum = 0.0;
@@ -164,7 +160,6 @@ DepositMetrics measure_deposit(const Snapshot& members, const DepositSettings& s
     if (t >= 0.0) spread += (t - m.surface_height) * (t - m.surface_height);
   m.surface_roughness = std::sqrt(spread / filled);
 
-  const std::vector<int>& contacts = grains.contacts;
   m.contacts = census.contacts;
   m.mean_overlap = census.contacts > 0 ? census.overlap_sum / double(census.contacts) : 0.0;
   m.max_overlap = census.overlap_max;
