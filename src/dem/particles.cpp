@@ -2,6 +2,8 @@
 
 #include <numbers>
 
+#include "dem/permutation.hpp"
+
 namespace trapdem {
 
 std::size_t Particles::add(std::int64_t particle_id, const Vec3& x, double r, double density, const Vec3& v,
@@ -38,17 +40,6 @@ void Particles::truncate(std::size_t n) {
   image.resize(n);
 }
 
-namespace {
-template <class T>
-void apply_permutation(std::vector<T>& values, const std::vector<std::uint32_t>& new_to_old) {
-  std::vector<T> out(values.size());
-  const std::size_t n = new_to_old.size();
-  // A gather: each k writes its own element (the same result on any number of threads).
-#pragma omp parallel for schedule(static) if (n > 8192)
-  for (std::size_t k = 0; k < n; ++k) out[k] = values[new_to_old[k]];
-  values.swap(out);
-}
-}  // namespace
 
 void Particles::permute(const std::vector<std::uint32_t>& p) {
   apply_permutation(id, p); apply_permutation(radius, p); apply_permutation(mass, p);

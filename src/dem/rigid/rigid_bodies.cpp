@@ -8,6 +8,7 @@
 
 #include "core/errors.hpp"
 #include "dem/pair_list.hpp"
+#include "dem/permutation.hpp"
 
 namespace trapdem {
 
@@ -45,17 +46,6 @@ void RigidBodies::locate_members(const std::vector<std::int64_t>& particle_id) {
                                         "member of one (a lone sphere: a body of one member)", particle_id[i]));
 }
 
-namespace {
-
-template <class T>
-void permute_bodies(std::vector<T>& values, const std::vector<std::uint32_t>& body_order) {
-  std::vector<T> moved(values.size());
-  for (std::size_t b = 0; b < body_order.size(); ++b) moved[b] = values[body_order[b]];
-  values.swap(moved);
-}
-
-}  // namespace
-
 void RigidBodies::follow_particle_permutation(const std::vector<std::uint32_t>& order) {
   const std::size_t n_particles = order.size();
   std::vector<std::uint32_t> now_at(n_particles);
@@ -76,17 +66,17 @@ void RigidBodies::follow_particle_permutation(const std::vector<std::uint32_t>& 
     std::vector<std::uint32_t> body_order(n);
     std::iota(body_order.begin(), body_order.end(), 0u);
     std::sort(body_order.begin(), body_order.end(), [&](std::uint32_t a, std::uint32_t b) { return key[a] < key[b]; });
-    permute_bodies(id, body_order);
-    permute_bodies(mass, body_order);
-    permute_bodies(volume, body_order);
-    permute_bodies(principal_inertia, body_order);
-    permute_bodies(position, body_order);
-    permute_bodies(velocity, body_order);
-    permute_bodies(orientation, body_order);
-    permute_bodies(angular_momentum, body_order);
-    permute_bodies(force, body_order);
-    permute_bodies(torque, body_order);
-    if (spin.size() == n) permute_bodies(spin, body_order);
+    apply_permutation(id, body_order);
+    apply_permutation(mass, body_order);
+    apply_permutation(volume, body_order);
+    apply_permutation(principal_inertia, body_order);
+    apply_permutation(position, body_order);
+    apply_permutation(velocity, body_order);
+    apply_permutation(orientation, body_order);
+    apply_permutation(angular_momentum, body_order);
+    apply_permutation(force, body_order);
+    apply_permutation(torque, body_order);
+    if (spin.size() == n) apply_permutation(spin, body_order);
     // The members' arrays, body by body in the new order.
     const bool with_arms = arm.size() == member_count();
     std::vector<std::uint32_t> new_first(n + 1, 0);
