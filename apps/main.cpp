@@ -142,6 +142,10 @@ int main(int argc, char** argv) {
   an->add_option("--config", analyze.config, "Geometry (TOML with [box], [trapdoor]; default DIR/resolved.toml)");
   an->add_option("--out", analyze.out, "Output folder (default DIR/analysis)");
   an->add_flag("--no-figures", analyze.no_figures, "Fields and metrics only");
+  an->add_flag("--no-field-history", analyze.no_field_history,
+              "No field_history.h5 (every snapshot's settlement and strain on one grid)");
+  an->add_option("--field-history-grid", analyze.field_history_grid,
+                 "Grid spacing of field_history.h5, e.g. 2mm (default: one mean diameter)");
   an->add_option("--format", analyze.format, "Figure format: png (default), svg or pdf")
       ->check(CLI::IsMember({"png", "svg", "pdf"}, CLI::ignore_case));
   auto* an_levels = an->add_option("--contour-levels", analyze.contour_levels,

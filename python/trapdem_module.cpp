@@ -14,6 +14,7 @@
 #include <vector>
 
 #include "analysis/analysis_output.hpp"
+#include "analysis/field_history.hpp"
 #include "core/errors.hpp"
 #include "experiment/folder_run.hpp"
 #include "piv/piv_folder.hpp"
@@ -143,6 +144,39 @@ py::dict analyze(const std::string& dir, const std::string& at, const std::strin
   std::vector<std::string> files;
   for (const fs::path& f : written) files.push_back(f.string());
   d["written"] = files;
+  return d;
+}
+
+// A float stack as a (layers, rows, columns) float32 array.
+py::array_t<float> stack_array(const FloatStack& stack) {
+  py::array_t<float> a(std::vector<py::ssize_t>{py::ssize_t(stack.layers), py::ssize_t(stack.rows),
+                                                py::ssize_t(stack.columns)});
+  std::copy(stack.value.begin(), stack.value.end(), a.mutable_data());
+  return a;
+}
+
+py::dict field_history_file(const std::string& file) {
+  FieldHistory h;
+  {
+    py::gil_scoped_release release;
+    h = read_field_history(file);
+  }
+  std::vector<double> x(h.grid.nx), z(h.grid.nz);
+  for (std::size_t i = 0; i < h.grid.nx; ++i) x[i] = h.grid.x(i);
+  for (std::size_t j = 0; j < h.grid.nz; ++j) z[j] = h.grid.z(j);
+  py::dict d;
+  d["case"] = h.case_name;
+  d["view"] = h.view;
+  d["mean_diameter"] = h.mean_diameter;
+  d["reference_snapshot"] = h.reference_label;
+  d["reference_displacement"] = h.reference_displacement;
+  d["snapshot"] = h.labels;
+  d["trapdoor_displacement"] = array_of(h.trapdoor_displacement, {py::ssize_t(h.layers())});
+  d["x"] = array_of(x, {py::ssize_t(x.size())});
+  d["z"] = array_of(z, {py::ssize_t(z.size())});
+  d["vertical_displacement"] = stack_array(h.vertical_displacement);
+  d["gamma_max"] = stack_array(h.gamma_max);
+  d["volumetric_strain"] = stack_array(h.volumetric_strain);
   return d;
 }
 
@@ -278,6 +312,7 @@ PYBIND11_MODULE(_trapdem, m) {
         py::arg("stop_after_seconds"));
   m.def("analyze", &analyze, py::arg("dir"), py::arg("at"), py::arg("reference"), py::arg("view"),
         py::arg("incremental"), py::arg("smoothing"), py::arg("write"), py::arg("figures"), py::arg("format"));
+  m.def("field_history", &field_history_file, py::arg("file"));
   m.def("element", &element, py::arg("config_file"), py::arg("overrides"), py::arg("out"), py::arg("threads"));
   m.def("piv", &piv, py::arg("images"), py::arg("out"), py::arg("subset"), py::arg("step"), py::arg("threads"),
         py::arg("scale"), py::arg("origin"), py::arg("figures"));

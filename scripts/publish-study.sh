@@ -1,9 +1,11 @@
 #!/usr/bin/env bash
-# Copies what a reader of a study needs, without its HDF5 files, into a folder to commit or share:
+# Copies what a reader of a study needs, without its snapshots and checkpoints, into a folder to commit or share:
 # the report (page, figures, metrics.csv, case_summary.csv, summary.json) where it exists, and for
 # every run its run.json, resolved.toml, trapdoor.csv and run.log, with deposit.json and
-# analysis/metrics.json where they exist. Snapshots, checkpoints and analysis fields stay behind
-# (megabytes a run; the run folder keeps them).
+# analysis/metrics.json and analysis/field_history.h5 (every snapshot's settlement and strain on one
+# grid, float32 and compressed: ~0.1-5 MB a run, what a later analysis needs once the snapshots are
+# gone) where they exist. Snapshots, checkpoints and the analysis' particle-level fields.h5 stay
+# behind (megabytes to gigabytes a run; the run folder keeps them).
 #
 #   scripts/publish-study.sh STUDY_DIR DEST_DIR [--finished-only] [--figures]
 #
@@ -57,6 +59,10 @@ while IFS= read -r -d '' resolved; do
   if [ -f "$run/analysis/metrics.json" ]; then
     mkdir -p "$dest/$rel/analysis"
     cp "$run/analysis/metrics.json" "$dest/$rel/analysis/metrics.json"
+  fi
+  if [ -f "$run/analysis/field_history.h5" ]; then
+    mkdir -p "$dest/$rel/analysis"
+    cp "$run/analysis/field_history.h5" "$dest/$rel/analysis/field_history.h5"
   fi
   if [ $figures -eq 1 ] && [ -d "$run/analysis" ]; then
     mkdir -p "$dest/$rel/analysis"

@@ -252,6 +252,19 @@ def analyze(folder, *, at: str = "", reference: str = "0mm", view: str = "front"
                                      figures, format))
 
 
+def field_history(path) -> dict:
+    """Every snapshot's fields on one grid (analysis/field_history.h5, docs/analysis.md), from that
+    file or from a run folder (FOLDER/analysis/field_history.h5, written by ``trapdem analyze``):
+    `x` (nx), `z` (nz) in m; per layer (one per snapshot after the reference) `snapshot`,
+    `trapdoor_displacement` (m); `vertical_displacement` (m, up positive), `gamma_max` and
+    `volumetric_strain` (compression positive) as float32 arrays (layers, nz, nx), NaN where no
+    kept triangle covers a node; and `case`, `view`, `mean_diameter`, `reference_snapshot`."""
+    path = pathlib.Path(path)
+    if path.is_dir():
+        path = path / "analysis" / "field_history.h5"
+    return _trapdem.field_history(str(path))
+
+
 def element(config=None, *, preset: str | None = None, out=None, overrides: Iterable[str] = (),
             threads: int = 0) -> dict:
     """The virtual element test (docs/element.md) into `out`: the friction angles per confining stress."""

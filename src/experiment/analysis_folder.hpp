@@ -14,6 +14,8 @@ class AnalysisFolder {
 
   std::filesystem::path fields_h5() const { return dir_ / "fields.h5"; }    // nodes, triangles, strains, grids
   std::filesystem::path fields_xmf() const { return dir_ / "fields.xmf"; }  // its XDMF companion (ParaView)
+  // Every snapshot's fields on one grid (analysis/field_history.hpp).
+  std::filesystem::path field_history_h5() const { return dir_ / "field_history.h5"; }
   std::filesystem::path metrics_json() const { return dir_ / "metrics.json"; }
   std::filesystem::path shear_strain_png() const { return dir_ / "shear_strain.png"; }
   std::filesystem::path volumetric_strain_png() const { return dir_ / "volumetric_strain.png"; }

@@ -6,6 +6,7 @@
 #include <algorithm>
 #include <cerrno>
 #include <cstring>
+#include <stdexcept>
 
 #include <fmt/format.h>
 
@@ -55,6 +56,17 @@ struct Shape {
   hsize_t dims[2] = {0, 0};
 };
 
+// A dataset's string attribute "units", when `units` is not empty.
+void write_units(const Hdf5Group& g, std::string_view name, hid_t set, std::string_view units) {
+  if (units.empty()) return;
+  Hdf5Handle type = string_type();
+  Hdf5Handle scalar(H5Screate(H5S_SCALAR));
+  Hdf5Handle attr(H5Acreate2(set, "units", type.get(), scalar.get(), H5P_DEFAULT, H5P_DEFAULT));
+  const std::string text(units);
+  const char* ptr = text.c_str();
+  if (!attr.valid() || H5Awrite(attr.get(), type.get(), &ptr) < 0) fail(g.describe(name), "cannot write the units attribute");
+}
+
 void write_dataset(const Hdf5Group& g, std::string_view name, hid_t file_type, hid_t memory_type, const void* data,
                    std::size_t rows, std::size_t columns, std::string_view units) {
   const std::string key(name);
@@ -65,15 +77,7 @@ void write_dataset(const Hdf5Group& g, std::string_view name, hid_t file_type, h
   if (!set.valid()) fail(g.describe(name), "cannot create the dataset");
   if (rows > 0 && H5Dwrite(set.get(), memory_type, H5S_ALL, H5S_ALL, H5P_DEFAULT, data) < 0)
     fail(g.describe(name), "cannot write the dataset");
-  if (!units.empty()) {
-    Hdf5Handle type = string_type();
-    Hdf5Handle scalar(H5Screate(H5S_SCALAR));
-    Hdf5Handle attr(H5Acreate2(set.get(), "units", type.get(), scalar.get(), H5P_DEFAULT, H5P_DEFAULT));
-    const std::string text(units);
-    const char* ptr = text.c_str();
-    if (!attr.valid() || H5Awrite(attr.get(), type.get(), &ptr) < 0)
-      fail(g.describe(name), "cannot write the units attribute");
-  }
+  write_units(g, name, set.get(), units);
 }
 
 // A dataset's in-memory size may exceed what the file stores for it: type widening (at most 8x,
@@ -95,10 +99,8 @@ void check_dataset_memory(const Hdf5Group& g, std::string_view name, hid_t set, 
                                 filtered ? ", deflate's ratio" : ""));
 }
 
-// Opens a dataset and checks that it is 1-D (columns == 0) or N x columns, and that N rows of
-// `row_bytes` in memory agree with what the file stores (check_dataset_memory).
-Hdf5Handle open_dataset(const Hdf5Group& g, std::string_view name, std::size_t columns, std::size_t& rows,
-                        std::size_t row_bytes) {
+// Opens a dataset that holds its values.
+Hdf5Handle open_stored_dataset(const Hdf5Group& g, std::string_view name) {
   const std::string key(name);
   if (!g.has(name)) throw FileError(fmt::format("{}: no such dataset", g.describe(name)));
   Hdf5Handle set(H5Dopen2(g.id(), key.c_str(), H5P_DEFAULT));
@@ -109,6 +111,14 @@ Hdf5Handle open_dataset(const Hdf5Group& g, std::string_view name, std::size_t c
   if (creation.valid() && H5Pget_layout(creation.get()) == H5D_VIRTUAL)
     throw FileError(fmt::format("{}: a virtual dataset (its values are in other files): expected one that holds "
                                 "its values", g.describe(name)));
+  return set;
+}
+
+// Opens a dataset and checks that it is 1-D (columns == 0) or N x columns, and that N rows of
+// `row_bytes` in memory agree with what the file stores (check_dataset_memory).
+Hdf5Handle open_dataset(const Hdf5Group& g, std::string_view name, std::size_t columns, std::size_t& rows,
+                        std::size_t row_bytes) {
+  Hdf5Handle set = open_stored_dataset(g, name);
   Hdf5Handle space(H5Dget_space(set.get()));
   const int rank = H5Sget_simple_extent_ndims(space.get());
   hsize_t dims[H5S_MAX_RANK] = {};
@@ -340,6 +350,46 @@ void Hdf5Group::write_strings(std::string_view name, const std::vector<std::stri
   for (const std::string& s : data) pointers.push_back(s.c_str());
   Hdf5Handle type = string_type();
   write_dataset(*this, name, type.get(), type.get(), pointers.data(), pointers.size(), 0, {});
+}
+
+void Hdf5Group::write_float_stack(std::string_view name, const FloatStack& stack, std::string_view units) const {
+  if (stack.value.size() != stack.layers * stack.rows * stack.columns)
+    throw std::invalid_argument(fmt::format("write_float_stack {}: {} values for {} x {} x {}", describe(name),
+                                            stack.value.size(), stack.layers, stack.rows, stack.columns));
+  const std::string key(name);
+  const hsize_t dims[3] = {stack.layers, stack.rows, stack.columns};
+  Hdf5Handle space(H5Screate_simple(3, dims, nullptr));
+  if (!space.valid()) fail(describe(name), "cannot create the dataspace");
+  Hdf5Handle creation(H5Pcreate(H5P_DATASET_CREATE));
+  if (stack.value.size() > 0) {  // a chunk may not have a zero extent
+    const hsize_t chunk[3] = {1, stack.rows, stack.columns};
+    constexpr unsigned kDeflateLevel = 6;  // zlib's default: near its best ratio at a fraction of level 9's time
+    if (H5Pset_chunk(creation.get(), 3, chunk) < 0 || H5Pset_deflate(creation.get(), kDeflateLevel) < 0)
+      fail(describe(name), "cannot set the chunks and compression");
+  }
+  Hdf5Handle set(H5Dcreate2(id(), key.c_str(), H5T_IEEE_F32LE, space.get(), H5P_DEFAULT, creation.get(), H5P_DEFAULT));
+  if (!set.valid()) fail(describe(name), "cannot create the dataset");
+  if (!stack.value.empty() &&
+      H5Dwrite(set.get(), H5T_NATIVE_FLOAT, H5S_ALL, H5S_ALL, H5P_DEFAULT, stack.value.data()) < 0)
+    fail(describe(name), "cannot write the dataset");
+  write_units(*this, name, set.get(), units);
+}
+
+FloatStack Hdf5Group::read_float_stack(std::string_view name) const {
+  Hdf5Handle set = open_stored_dataset(*this, name);
+  Hdf5Handle space(H5Dget_space(set.get()));
+  hsize_t dims[H5S_MAX_RANK] = {};
+  const int rank = H5Sget_simple_extent_ndims(space.get());
+  if (rank > 0) H5Sget_simple_extent_dims(space.get(), dims, nullptr);
+  if (rank != 3) throw FileError(fmt::format("{}: expected a 3-D dataset (layers x rows x columns), found rank {}",
+                                             describe(name), rank));
+  check_dataset_memory(*this, name, set.get(), double(dims[0]) * double(dims[1]) * double(dims[2]) * sizeof(float));
+  FloatStack stack{dims[0], dims[1], dims[2], {}};
+  stack.value.resize(stack.layers * stack.rows * stack.columns);
+  if (!stack.value.empty() &&
+      H5Dread(set.get(), H5T_NATIVE_FLOAT, H5S_ALL, H5S_ALL, H5P_DEFAULT, stack.value.data()) < 0)
+    fail(describe(name), "cannot read the dataset (is its number type convertible?)");
+  return stack;
 }
 
 std::vector<double> Hdf5Group::read_doubles(std::string_view name) const {

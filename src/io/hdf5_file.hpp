@@ -20,6 +20,12 @@
 
 namespace trapdem {
 
+// Layers of 2-D float fields, value[(layer * rows + row) * columns + column].
+struct FloatStack {
+  std::size_t layers = 0, rows = 0, columns = 0;
+  std::vector<float> value;
+};
+
 // Owns one HDF5 identifier and closes it with the matching H5*close.
 class Hdf5Handle {
  public:
@@ -72,6 +78,9 @@ class Hdf5Group {
   void write_int3s(std::string_view name, std::span<const Int3> data) const;   // N x 3 int32
   void write_quaternions(std::string_view name, std::span<const Quaternion> data) const;  // N x 4 float64
   void write_strings(std::string_view name, const std::vector<std::string>& data) const;  // variable-length UTF-8
+  // A stack of 2-D fields, layers x rows x columns of float32, deflate-compressed (HDF5's built-in
+  // filter) in one chunk per layer: compact files of gridded results (analysis/field_history.h5).
+  void write_float_stack(std::string_view name, const FloatStack& stack, std::string_view units = {}) const;
 
   // Readers check the rank and shape and convert the stored number type to the requested one
   // (so a file written by h5py with float32 or int32 columns reads too).
@@ -83,6 +92,7 @@ class Hdf5Group {
   std::vector<Int3> read_int3s(std::string_view name) const;
   std::vector<Quaternion> read_quaternions(std::string_view name) const;
   std::vector<std::string> read_strings(std::string_view name) const;
+  FloatStack read_float_stack(std::string_view name) const;  // any 3-D dataset of a convertible number type
   std::size_t dataset_length(std::string_view name) const;  // first dimension
 
   // Scalar attributes of this group.

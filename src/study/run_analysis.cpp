@@ -7,6 +7,7 @@
 #include "core/length_text.hpp"
 #include "experiment/ground_reaction.hpp"
 #include "experiment/run_folder.hpp"
+#include "io/lammps_dump.hpp"
 #include "io/text_file.hpp"
 #include "plot/figure_format.hpp"
 #include "plot/line_chart.hpp"
@@ -63,6 +64,31 @@ SpecimenGeometry load_specimen_geometry(const fs::path& config_file) {
                    "with [box] and [trapdoor])"));
 }
 
+namespace {
+
+// DIR/snapshots.h5, checked to exist; --displacements without --dumps refused.
+fs::path snapshot_file(const AnalyzeOptions& o) {
+  if (!o.displacements.empty()) throw InputError("--displacements goes with --dumps");
+  const fs::path h5 = RunFolder(o.dir).snapshots_h5();
+  if (!fs::exists(h5)) {
+    throw InputError(fmt::format("{}: not found (run `trapdem run` first, or give --dumps FILE...)", h5.string()));
+  }
+  return h5;
+}
+
+// --field-history-grid (m; 0: the default, one mean diameter), checked against the box: a positive
+// length whose grid over the box fits check_grid_memory.
+double field_history_spacing(const AnalyzeOptions& o, const SpecimenGeometry& geometry) {
+  if (o.field_history_grid.empty()) return 0.0;
+  const double spacing = parse_length(o.field_history_grid, "--field-history-grid");
+  if (!(spacing > 0.0))
+    throw InputError(fmt::format("--field-history-grid {}: expected a positive length", o.field_history_grid));
+  check_grid_memory(geometry.box_width, geometry.box_height, spacing, "--field-history-grid");
+  return spacing;
+}
+
+}  // namespace
+
 AnalysisResult analyze_directory(const AnalyzeOptions& o) {
   const RunFolder run(o.dir);
   const SpecimenGeometry geometry = load_specimen_geometry(o.config.empty() ? run.resolved_toml() : fs::path(o.config));
@@ -71,12 +97,27 @@ AnalysisResult analyze_directory(const AnalyzeOptions& o) {
     std::vector<fs::path> dumps(o.dumps.begin(), o.dumps.end());
     return analyze_dump_files(dumps, parse_length_list(o.displacements, "--displacements"), geometry, settings);
   }
-  if (!o.displacements.empty()) throw InputError("--displacements goes with --dumps");
-  const fs::path h5 = run.snapshots_h5();
-  if (!fs::exists(h5)) {
-    throw InputError(fmt::format("{}: not found (run `trapdem run` first, or give --dumps FILE...)", h5.string()));
+  return analyze_snapshot_file(snapshot_file(o), geometry, settings);
+}
+
+FieldHistory field_history_of_directory(const AnalyzeOptions& o) {
+  const RunFolder run(o.dir);
+  const SpecimenGeometry geometry = load_specimen_geometry(o.config.empty() ? run.resolved_toml() : fs::path(o.config));
+  const AnalysisSettings settings = analysis_settings(o);
+  const double spacing = field_history_spacing(o, geometry);
+  if (!o.dumps.empty()) {
+    const std::vector<double> displacements = parse_length_list(o.displacements, "--displacements");
+    if (displacements.size() != o.dumps.size())
+      throw InputError(fmt::format("{} dump files but {} displacements: give one trapdoor displacement per dump",
+                                   o.dumps.size(), displacements.size()));
+    const FrameLoader load = [&](std::size_t k) {
+      Snapshot s = read_dump_file(o.dumps[k]);
+      s.trapdoor_displacement = displacements[k];
+      return AnalysisFrame{fs::path(o.dumps[k]).filename().string(), displacements[k], std::move(s)};
+    };
+    return field_history(displacements, load, geometry, settings, spacing);
   }
-  return analyze_snapshot_file(h5, geometry, settings);
+  return field_history_of_snapshot_file(snapshot_file(o), geometry, settings, spacing);
 }
 
 fs::path analysis_output_dir(const AnalyzeOptions& o) {
@@ -125,11 +166,19 @@ AnalysisResult analyze_and_write(const AnalyzeOptions& o, std::vector<fs::path>*
   // The figure options are checked before the analysis runs.
   const plot::FigureFormat format = plot::parse_figure_format(o.format, "--format");
   const plot::ContourLevels levels = contour_levels_option(o.contour_levels, o.contour_step);
+  if (!o.no_field_history) {
+    const RunFolder run(o.dir);
+    field_history_spacing(o, load_specimen_geometry(o.config.empty() ? run.resolved_toml() : fs::path(o.config)));
+  }
   AnalysisResult r = analyze_directory(o);
   const AnalysisFolder out(analysis_output_dir(o));
   write_fields(out.fields_h5(), out.fields_xmf(), r);
   write_metrics(out.metrics_json(), r);
   std::vector<fs::path> written{out.fields_h5(), out.fields_xmf(), out.metrics_json()};
+  if (!o.no_field_history) {
+    write_field_history(out.field_history_h5(), field_history_of_directory(o));
+    written.push_back(out.field_history_h5());
+  }
   if (!o.no_figures) {
     const auto figure = [&](const fs::path& png) {
       written.push_back(plot::with_format(png, format));

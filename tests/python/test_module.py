@@ -124,6 +124,26 @@ def test_the_analysis_is_the_programs(scratch, short_run):
     assert a.settlement_grid.ndim == 2
 
 
+def test_the_field_history_holds_the_analysis_at_every_snapshot(scratch, short_run):
+    program("analyze", short_run.path, "--out", scratch / "analysis", "--no-figures", "--quiet")
+    h = trapdem.field_history(scratch / "analysis" / "field_history.h5")
+    layers = len(h["snapshot"])
+    assert layers >= 1 and np.all(np.diff(h["trapdoor_displacement"]) > 0) and h["trapdoor_displacement"][0] > 0
+    for key in ("vertical_displacement", "gamma_max", "volumetric_strain"):
+        assert h[key].shape == (layers, len(h["z"]), len(h["x"])) and h[key].dtype == np.float32, key
+    # The last layer is the last snapshot's analysis: its settlement grid (half a diameter) holds a
+    # node at every node of the history's (one diameter), both being multiples of their spacing.
+    a = trapdem.analyze(short_run)
+    i = np.rint((h["x"] - a.grid_x0) / a.grid_spacing).astype(int)
+    j = np.rint((h["z"] - a.grid_z0) / a.grid_spacing).astype(int)
+    assert np.allclose(a.grid_x0 + i * a.grid_spacing, h["x"], rtol=0, atol=1e-12)
+    expected = a.settlement_grid[np.ix_(j, i)]
+    last = h["vertical_displacement"][-1]
+    assert np.array_equal(np.isnan(last), np.isnan(expected))
+    assert np.nanmax(np.abs(last - expected)) <= 1e-7 * np.nanmax(np.abs(expected))  # float32 storage
+    assert np.nanmin(last) < 0  # the ground above the door settles
+
+
 def test_piv_on_synthetic_images(scratch):
     images = trapdem.synth("rigid", scratch / "images", size=(160, 160), images=2)
     assert all(p.is_file() for p in images) and (scratch / "images" / "truth.csv").is_file()

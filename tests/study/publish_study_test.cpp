@@ -25,7 +25,8 @@ void write(const fs::path& file, const std::string& text) {
   std::ofstream(file) << text;
 }
 
-// A run folder: finished or not, with a checkpoint that must not be published.
+// A run folder: finished or not, with a checkpoint and particle-level fields that must not be
+// published and the gridded field history that must.
 void make_run(const fs::path& run, bool complete) {
   write(run / "resolved.toml", "name = \"" + run.filename().string() + "\"\n");
   write(run / "run.json", complete ? "{\"complete\": true}\n" : "{\"complete\": false}\n");
@@ -33,6 +34,8 @@ void make_run(const fs::path& run, bool complete) {
   write(run / "checkpoint.h5", "particle data");
   write(run / "analysis" / "metrics.json", "{}\n");
   write(run / "analysis" / "shear_strain.png", "png");
+  write(run / "analysis" / "fields.h5", "particle-level fields");
+  write(run / "analysis" / "field_history.h5", "gridded fields");
 }
 
 int publish(const fs::path& study, const fs::path& dest) {
@@ -57,7 +60,9 @@ TEST(PublishStudy, TwoSessionsPublishTheirCasesAndTheWholeLog) {
   EXPECT_TRUE(fs::exists(dest / "cases" / "a" / "run.json"));
   EXPECT_TRUE(fs::exists(dest / "cases" / "a" / "analysis" / "metrics.json"));
   EXPECT_TRUE(fs::exists(dest / "cases" / "a" / "analysis" / "shear_strain.png"));
+  EXPECT_TRUE(fs::exists(dest / "cases" / "a" / "analysis" / "field_history.h5"));
   EXPECT_FALSE(fs::exists(dest / "cases" / "a" / "checkpoint.h5"));
+  EXPECT_FALSE(fs::exists(dest / "cases" / "a" / "analysis" / "fields.h5"));
   EXPECT_FALSE(fs::exists(dest / "cases" / "b"));
 
   // Second session, a new folder: a copied back, b run afresh to the end. Its log begins anew.
