@@ -27,7 +27,7 @@ struct Rotation {
 };
 
 // Body b's angular velocity w = R I^-1 R^T L (space frame).
-Vec3 spin_of(const RigidBodies& bodies, std::size_t b, const Rotation& r) {
+[[gnu::always_inline]] inline Vec3 spin_of(const RigidBodies& bodies, std::size_t b, const Rotation& r) {
   const Vec3 l = r.transposed(bodies.angular_momentum[b]);
   const Vec3& inertia = bodies.principal_inertia[b];
   return r(Vec3{l.x / inertia.x, l.y / inertia.y, l.z / inertia.z});

@@ -122,6 +122,27 @@ ClumpTemplate ClumpTemplate::scaled_to(double diameter) const {
   return t;
 }
 
+namespace {
+
+// Moments (ascending) that differ by round-off only are made equal bit for bit: a shape symmetric
+// about an axis (a dimer; the grid treats the two transverse axes alike) is then a symmetric top,
+// whose free rotation is integrated exactly (free_rotation.hpp). 1e-9 of the largest moment is far
+// above the sums' round-off (~1e-15) and far below the integration's error (~1e-3): a shape whose
+// moments differ by the rule's error, a regular tetrahedron's say, keeps them as computed.
+void equalise_round_off(Vec3& moments) {
+  const double tolerance = 1e-9 * moments.z;
+  const bool low = moments.y - moments.x <= tolerance, high = moments.z - moments.y <= tolerance;
+  if (low && high) {
+    moments.x = moments.y = moments.z = (moments.x + moments.y + moments.z) / 3.0;
+  } else if (low) {
+    moments.x = moments.y = 0.5 * (moments.x + moments.y);
+  } else if (high) {
+    moments.y = moments.z = 0.5 * (moments.y + moments.z);
+  }
+}
+
+}  // namespace
+
 ClumpTemplate make_clump_template(const std::vector<ClumpMember>& members, const std::string& source,
                                   int cells_per_min_radius) {
   check_members(members, source);
@@ -181,6 +202,7 @@ ClumpTemplate make_clump_template(const std::vector<ClumpMember>& members, const
   const Matrix3 inertia{{{Cyy + Czz, -Cxy, -Cxz}, {-Cxy, Cxx + Czz, -Cyz}, {-Cxz, -Cyz, Cxx + Cyy}}};
   Matrix3 axes{};
   symmetric_eigen(inertia, t.principal_inertia, axes);
+  equalise_round_off(t.principal_inertia);
   t.reference_axes_x = {axes[0][0], axes[1][0], axes[2][0]};
   t.reference_axes_y = {axes[0][1], axes[1][1], axes[2][1]};
   t.reference_axes_z = {axes[0][2], axes[1][2], axes[2][2]};

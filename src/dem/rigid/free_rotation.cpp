@@ -50,9 +50,51 @@ template <int k>
   L[b] = -s * La + c * Lb;
 }
 
+// The symmetric top's exact step (free_rotation.hpp) with the library's sin and cos: any angle.
+void rotate_symmetric_top(Quaternion& q, Vec3& L, const Vec3& inertia, int axis, double dt) {
+  const double perpendicular = inertia[(axis + 1) % 3];
+  const double length = norm(L);
+  // q <- q (cos(psi/2), sin(psi/2) L/|L|), psi = dt |L| / I_perp: the precession about L, in the body frame.
+  if (length > 0.0) {
+    const double half_psi = 0.5 * dt * length / perpendicular;
+    const double s = std::sin(half_psi) / length;
+    q = q * Quaternion{std::cos(half_psi), s * L.x, s * L.y, s * L.z};
+  }
+  // q <- q (cos(phi/2), sin(phi/2) e_axis), phi = dt L_axis (1/I_axis - 1/I_perp): the spin about
+  // the symmetry axis relative to the precession; L's body components turn by -phi about it.
+  const double phi = dt * L[axis] * (1.0 / inertia[axis] - 1.0 / perpendicular);
+  Quaternion turn{std::cos(0.5 * phi), 0.0, 0.0, 0.0};
+  (axis == 0 ? turn.x : axis == 1 ? turn.y : turn.z) = std::sin(0.5 * phi);
+  q = normalised(q * turn);
+  const int a = (axis + 1) % 3, b = (axis + 2) % 3;
+  const double c = std::cos(phi), sn = std::sin(phi), La = L[a], Lb = L[b];
+  L[a] = c * La + sn * Lb;
+  L[b] = -sn * La + c * Lb;
+}
+
+}  // namespace
+
+int symmetry_axis(const Vec3& I) {
+  if (I.y == I.z) return 0;  // prolate (a dimer) or spherical
+  if (I.x == I.y) return 2;  // oblate
+  if (I.x == I.z) return 1;  // moments not in ascending order
+  return -1;
+}
+
+namespace {
+
+// The symmetric top's axis when the body turns as one (every moment positive), else -1: the
+// integrator rotate_freely and the lanes choose by it alike.
+int top_axis(const Vec3& I) { return I.x > 0.0 && I.y > 0.0 && I.z > 0.0 ? symmetry_axis(I) : -1; }
+
 }  // namespace
 
 void rotate_freely(Quaternion& q, Vec3& momentum_body, const Vec3& inertia, double dt) {
+  const int axis = top_axis(inertia);
+  if (axis >= 0) {
+    rotate_symmetric_top(q, momentum_body, inertia, axis, dt);
+    return;
+  }
   // Miller et al. (2002): the symmetric splitting, the third axis outermost.
   // A zero moment (a body without extent about an axis) does not turn about that axis.
   const Vec3 inverse{inertia.x > 0.0 ? 1.0 / inertia.x : 0.0, inertia.y > 0.0 ? 1.0 / inertia.y : 0.0,
@@ -109,49 +151,101 @@ template <int k>
   }
 }
 
+// The symmetric top's exact step (rotate_symmetric_top) for every lane, `axis` the odd moment's:
+// the precession about L by psi = dt |L| / I_perp, then the spin about the axis by phi = dt L_axis
+// (1/I_axis - 1/I_perp). The series need only |L|^2 (sin(psi/2) / |L| = (dt / 2 I_perp) sinc):
+// no square root, no division. Two turns instead of NO_SQUISH's five.
+template <int axis>
+[[gnu::always_inline]] inline void rotate_top_lanes(Lanes& s, double dt) {
+  constexpr int a = (axis + 1) % 3, b = (axis + 2) % 3;
+  constexpr double k6 = 1.0 / 6.0, k20 = 1.0 / 20.0, k42 = 1.0 / 42.0;
+  constexpr double k12 = 1.0 / 12.0, k30 = 1.0 / 30.0, k56 = 1.0 / 56.0;
+#pragma omp simd
+  for (int n = 0; n < kRotationLanes; ++n) {
+    const double lx = s.l[0][n], ly = s.l[1][n], lz = s.l[2][n];
+    const double k = 0.5 * dt * s.inverse[a][n];  // psi / 2 = k |L|
+    const double t2 = k * k * (lx * lx + ly * ly + lz * lz);
+    const double f = k * (1.0 - t2 * k6 * (1.0 - t2 * k20 * (1.0 - t2 * k42)));   // sin(psi/2) / |L|
+    const double pw = 1.0 - 0.5 * t2 * (1.0 - t2 * k12 * (1.0 - t2 * k30 * (1.0 - t2 * k56)));  // cos(psi/2)
+    const double px = f * lx, py = f * ly, pz = f * lz;
+    double w = s.w[n], x = s.x[n], y = s.y[n], z = s.z[n];
+    // q <- q (pw, p): the Hamilton product.
+    const double w1 = w * pw - x * px - y * py - z * pz, x1 = w * px + x * pw + y * pz - z * py,
+                 y1 = w * py - x * pz + y * pw + z * px, z1 = w * pz + x * py - y * px + z * pw;
+    double hs, hc;
+    series_sincos(0.5 * dt * s.l[axis][n] * (s.inverse[axis][n] - s.inverse[a][n]), hs, hc);
+    if constexpr (axis == 0) {
+      w = w1 * hc - x1 * hs; x = x1 * hc + w1 * hs; y = y1 * hc + z1 * hs; z = z1 * hc - y1 * hs;
+    } else if constexpr (axis == 1) {
+      w = w1 * hc - y1 * hs; x = x1 * hc - z1 * hs; y = y1 * hc + w1 * hs; z = z1 * hc + x1 * hs;
+    } else {
+      w = w1 * hc - z1 * hs; x = x1 * hc + y1 * hs; y = y1 * hc - x1 * hs; z = z1 * hc + w1 * hs;
+    }
+    s.w[n] = w; s.x[n] = x; s.y[n] = y; s.z[n] = z;
+    // L's body components turn by -phi about the axis (sin and cos of phi from the half angle's).
+    const double sn = 2.0 * hs * hc, cs = 1.0 - 2.0 * hs * hs;
+    const double la = s.l[a][n], lb = s.l[b][n];
+    s.l[a][n] = cs * la + sn * lb;
+    s.l[b][n] = -sn * la + cs * lb;
+  }
+}
+
 }  // namespace
 
 void rotate_freely_lanes(Quaternion* q, Vec3* momentum_body, const Vec3* inertia, double dt, int count) {
+  // Lane n holds body n. The inverses, the check of the angles and the renormalisation run over the
+  // lanes side by side (a division and a square root each, which one body at a time would wait on);
+  // a body the lanes must not turn is turned afterwards by rotate_freely from its unchanged state.
   Lanes s{};
-  int lanes = 0;
-  int alone[kRotationLanes];  // the bodies that turn too far for the series: rotate_freely
-  int alone_count = 0;
+  const int lanes_axis = count > 0 ? top_axis(inertia[0]) : -1;  // the lanes' kind: a top's axis, or -1
+  bool own_kind[kRotationLanes] = {};
   for (int n = 0; n < count; ++n) {
-    const Vec3& I = inertia[n];
-    const Vec3 inverse{I.x > 0.0 ? 1.0 / I.x : 0.0, I.y > 0.0 ? 1.0 / I.y : 0.0, I.z > 0.0 ? 1.0 / I.z : 0.0};
+    s.w[n] = q[n].w; s.x[n] = q[n].x; s.y[n] = q[n].y; s.z[n] = q[n].z;
+    for (int k = 0; k < 3; ++k) {
+      s.l[k][n] = momentum_body[n][k];
+      s.inverse[k][n] = inertia[n][k];
+    }
+    own_kind[n] = top_axis(inertia[n]) == lanes_axis;
+  }
+  // Unused lanes turn nothing (zero momentum, unit quaternion, no inverse): harmless, never read back.
+  for (int n = count; n < kRotationLanes; ++n) s.w[n] = 1.0;
+  double within_series[kRotationLanes];  // 1: every sub-rotation's angle below 0.01 rad
+#pragma omp simd
+  for (int n = 0; n < kRotationLanes; ++n) {
+    double largest = 0.0;
+    for (int k = 0; k < 3; ++k) {
+      const double I = s.inverse[k][n];
+      s.inverse[k][n] = I > 0.0 ? 1.0 / I : 0.0;  // a zero moment does not turn about its axis
+      largest = std::max(largest, s.inverse[k][n]);
+    }
     // Every sub-rotation's angle is at most dt |L| / I_k (the body-frame components of L turn, its
     // length does not).
-    const double largest = dt * norm(momentum_body[n]) * std::max({inverse.x, inverse.y, inverse.z});
-    if (!(largest < 1e-2)) {
-      alone[alone_count++] = n;
-      continue;
-    }
-    s.w[lanes] = q[n].w; s.x[lanes] = q[n].x; s.y[lanes] = q[n].y; s.z[lanes] = q[n].z;
-    for (int k = 0; k < 3; ++k) {
-      s.l[k][lanes] = momentum_body[n][k];
-      s.inverse[k][lanes] = inverse[k];
-    }
-    ++lanes;
+    const double l2 = s.l[0][n] * s.l[0][n] + s.l[1][n] * s.l[1][n] + s.l[2][n] * s.l[2][n];
+    within_series[n] = dt * dt * l2 * largest * largest < 1e-4 ? 1.0 : 0.0;  // false for NaN too
   }
-  // Unused lanes turn nothing (zero momentum, unit quaternion): harmless, and never read back.
-  for (int n = lanes; n < kRotationLanes; ++n) s.w[n] = 1.0;
-  rotate_lanes_about<2>(s, 0.5 * dt);
-  rotate_lanes_about<1>(s, 0.5 * dt);
-  rotate_lanes_about<0>(s, dt);
-  rotate_lanes_about<1>(s, 0.5 * dt);
-  rotate_lanes_about<2>(s, 0.5 * dt);
-  int lane = 0;
-  for (int n = 0, next_alone = 0; n < count; ++n) {
-    if (next_alone < alone_count && alone[next_alone] == n) {
-      ++next_alone;
+  switch (lanes_axis) {
+    case 0: rotate_top_lanes<0>(s, dt); break;
+    case 1: rotate_top_lanes<1>(s, dt); break;
+    case 2: rotate_top_lanes<2>(s, dt); break;
+    default:  // NO_SQUISH, as rotate_freely
+      rotate_lanes_about<2>(s, 0.5 * dt);
+      rotate_lanes_about<1>(s, 0.5 * dt);
+      rotate_lanes_about<0>(s, dt);
+      rotate_lanes_about<1>(s, 0.5 * dt);
+      rotate_lanes_about<2>(s, 0.5 * dt);
+  }
+#pragma omp simd
+  for (int n = 0; n < kRotationLanes; ++n) {  // renormalised against round-off
+    const double scale = 1.0 / std::sqrt(s.w[n] * s.w[n] + s.x[n] * s.x[n] + s.y[n] * s.y[n] + s.z[n] * s.z[n]);
+    s.w[n] *= scale; s.x[n] *= scale; s.y[n] *= scale; s.z[n] *= scale;
+  }
+  for (int n = 0; n < count; ++n) {
+    if (!own_kind[n] || within_series[n] == 0.0) {
       rotate_freely(q[n], momentum_body[n], inertia[n], dt);
       continue;
     }
-    const double scale = 1.0 / std::sqrt(s.w[lane] * s.w[lane] + s.x[lane] * s.x[lane] + s.y[lane] * s.y[lane] +
-                                         s.z[lane] * s.z[lane]);
-    q[n] = {s.w[lane] * scale, s.x[lane] * scale, s.y[lane] * scale, s.z[lane] * scale};
-    momentum_body[n] = {s.l[0][lane], s.l[1][lane], s.l[2][lane]};
-    ++lane;
+    q[n] = {s.w[n], s.x[n], s.y[n], s.z[n]};
+    momentum_body[n] = {s.l[0][n], s.l[1][n], s.l[2][n]};
   }
 }
 
