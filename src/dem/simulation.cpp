@@ -236,8 +236,7 @@ void Simulation::step() {
     case NextLists::keep: update_ghosts(); break;
   }
   forces(fused_kick);
-  if (with_bodies) {
-    reduce_member_loads(state_.bodies, state_.particles);
+  if (with_bodies) {  // the members' loads reduced onto the bodies in the kick's pass
     const std::optional<FrameKick> frame = frame_kick_now();
     bad_particle_ = bodies_second_half_kick(state_.bodies, state_.particles, body_kick(frame ? &*frame : nullptr))
                         ? first_non_finite_particle()

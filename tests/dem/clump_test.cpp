@@ -429,7 +429,7 @@ TEST(ClumpOrder, BodiesFollowAPermutationOfTheParticlesIntoTheirFirstMembersOrde
     EXPECT_EQ(bodies.angular_momentum[b], before.angular_momentum[a]);
     EXPECT_EQ(bodies.force[b], before.force[a]);
     EXPECT_EQ(bodies.torque[b], before.torque[a]);
-    EXPECT_EQ(bodies.spin[b], before.spin[a]);
+    EXPECT_EQ(bodies.inverse_inertia[b], before.inverse_inertia[a]);
     EXPECT_EQ(bodies.principal_inertia[b], before.principal_inertia[a]);
     ASSERT_EQ(bodies.first_member[b + 1] - bodies.first_member[b], before.first_member[a + 1] - before.first_member[a]);
     for (std::uint32_t k = 0; k < bodies.first_member[b + 1] - bodies.first_member[b]; ++k) {

@@ -26,16 +26,32 @@ struct Rotation {
   }
 };
 
-// Body b's angular velocity w = R I^-1 R^T L (space frame).
-[[gnu::always_inline]] inline Vec3 spin_of(const RigidBodies& bodies, std::size_t b, const Rotation& r) {
-  const Vec3 l = r.transposed(bodies.angular_momentum[b]);
-  const Vec3& inertia = bodies.principal_inertia[b];
-  return r(Vec3{l.x / inertia.x, l.y / inertia.y, l.z / inertia.z});
+// Body b's inverse inertia tensor in the space frame, J = R I^-1 R^T: J_ij = sum_k R_ik R_jk / I_k,
+// the rows of R scaled by 1/I dotted with the rows. Its product with L is the angular velocity.
+[[gnu::always_inline]] inline SymmetricMatrix3 space_inverse_inertia(const Vec3& inertia, const Rotation& r) {
+  const Vec3 inverse{1.0 / inertia.x, 1.0 / inertia.y, 1.0 / inertia.z};
+  const Vec3 a{r.row0.x * inverse.x, r.row0.y * inverse.y, r.row0.z * inverse.z};
+  const Vec3 b{r.row1.x * inverse.x, r.row1.y * inverse.y, r.row1.z * inverse.z};
+  const Vec3 c{r.row2.x * inverse.x, r.row2.y * inverse.y, r.row2.z * inverse.z};
+  return {dot(a, r.row0), dot(b, r.row1), dot(c, r.row2), dot(a, r.row1), dot(a, r.row2), dot(b, r.row2)};
 }
 
 void size_workspaces(RigidBodies& bodies) {
   bodies.arm.resize(bodies.member_count());
-  bodies.spin.resize(bodies.size());
+  bodies.inverse_inertia.resize(bodies.size());
+}
+
+// Body b's force and torque about its centre of mass from its members': F = sum f_i,
+// T = sum (a_i x f_i + t_i), with the arms of the last placement.
+[[gnu::always_inline]] inline void reduce_body_loads(RigidBodies& bodies, const Particles& particles, std::size_t b) {
+  Vec3 f{}, t{};
+  for (std::uint32_t m = bodies.first_member[b]; m < bodies.first_member[b + 1]; ++m) {
+    const std::uint32_t i = bodies.member_particle[m];
+    f += particles.force[i];
+    t += cross(bodies.arm[m], particles.force[i]) + particles.torque[i];
+  }
+  bodies.force[b] = f;
+  bodies.torque[b] = t;
 }
 
 }  // namespace
@@ -46,8 +62,9 @@ void place_members(RigidBodies& bodies, Particles& particles, bool positions) {
 #pragma omp parallel for schedule(static)
   for (std::size_t b = 0; b < n; ++b) {
     const Rotation r(bodies.orientation[b]);
-    const Vec3 w = spin_of(bodies, b, r);
-    bodies.spin[b] = w;
+    const SymmetricMatrix3 J = space_inverse_inertia(bodies.principal_inertia[b], r);
+    bodies.inverse_inertia[b] = J;
+    const Vec3 w = J * bodies.angular_momentum[b];
     for (std::uint32_t m = bodies.first_member[b]; m < bodies.first_member[b + 1]; ++m) {
       const std::uint32_t i = bodies.member_particle[m];
       const Vec3 arm = positions ? r(bodies.member_offset[m]) : bodies.arm[m];
@@ -101,8 +118,9 @@ DriftReport bodies_first_half_kick_and_drift(RigidBodies& bodies, Particles& par
   for (std::size_t b = 0; b < n; ++b) {
     const Vec3& v = bodies.velocity[b];
     const Rotation r(bodies.orientation[b]);
-    const Vec3 w = spin_of(bodies, b, r);
-    bodies.spin[b] = w;
+    const SymmetricMatrix3 J = space_inverse_inertia(bodies.principal_inertia[b], r);
+    bodies.inverse_inertia[b] = J;
+    const Vec3 w = J * bodies.angular_momentum[b];
     for (std::uint32_t m = bodies.first_member[b]; m < bodies.first_member[b + 1]; ++m) {
       const std::uint32_t i = bodies.member_particle[m];
       const Vec3 arm = r(bodies.member_offset[m]);
@@ -142,34 +160,26 @@ void reduce_member_loads(RigidBodies& bodies, const Particles& particles) {
     throw std::logic_error("reduce_member_loads: the members' arms are not current (place_members first)");
   const std::size_t n = bodies.size();
 #pragma omp parallel for schedule(static)
-  for (std::size_t b = 0; b < n; ++b) {
-    Vec3 f{}, t{};
-    for (std::uint32_t m = bodies.first_member[b]; m < bodies.first_member[b + 1]; ++m) {
-      const std::uint32_t i = bodies.member_particle[m];
-      f += particles.force[i];
-      t += cross(bodies.arm[m], particles.force[i]) + particles.torque[i];
-    }
-    bodies.force[b] = f;
-    bodies.torque[b] = t;
-  }
+  for (std::size_t b = 0; b < n; ++b) reduce_body_loads(bodies, particles, b);
 }
 
 int bodies_second_half_kick(RigidBodies& bodies, Particles& particles, const BodyKick& kick) {
+  if (bodies.inverse_inertia.size() != bodies.size() || bodies.arm.size() != bodies.member_count())
+    throw std::logic_error("bodies_second_half_kick: the workspaces are not current (place_members first)");
   const std::size_t n = bodies.size();
   const double h = kick.half;
   int any_bad = 0;
 #pragma omp parallel for schedule(static) reduction(| : any_bad)
   for (std::size_t b = 0; b < n; ++b) {
+    reduce_body_loads(bodies, particles, b);
     Vec3& v = bodies.velocity[b];
     v += h * (bodies.force[b] / bodies.mass[b] + kick.gravity);
     if (kick.frame) v = kick.frame->coriolis_turn(v + h * kick.frame->acceleration(bodies.position[b]));
     Vec3& L = bodies.angular_momentum[b];
     if (kick.rotate) L = (L + h * bodies.torque[b]) * kick.spin_retention;
     any_bad |= is_finite(v) && is_finite(L) ? 0 : 1;
-    // The members' velocities and spins (their arms are this step's: the kick turns no body).
-    const Rotation r(bodies.orientation[b]);
-    const Vec3 w = spin_of(bodies, b, r);
-    bodies.spin[b] = w;
+    // The members' velocities and spins (their arms and J are this step's: the kick turns no body).
+    const Vec3 w = bodies.inverse_inertia[b] * L;
     for (std::uint32_t m = bodies.first_member[b]; m < bodies.first_member[b + 1]; ++m) {
       const std::uint32_t i = bodies.member_particle[m];
       particles.velocity[i] = v + cross(w, bodies.arm[m]);

@@ -2,8 +2,8 @@
 // The motion of rigid bodies (rigid_bodies.hpp) over a step, the counterpart of integrator.hpp's
 // for spheres: velocity Verlet for the centre of mass, and for the rotation the angular momentum
 // kicked by the torque in the space frame for half a step on either side of the free rotation of
-// NO_SQUISH (free_rotation.hpp; Miller et al. 2002). Between the two half kicks the members'
-// forces are summed onto their bodies; after each, the members' positions, velocities and spins
+// NO_SQUISH (free_rotation.hpp; Miller et al. 2002; a symmetric top's exact turn). Before the second
+// half kick the members' forces are summed onto their bodies; after each, the members' positions, velocities and spins
 // follow from their bodies' (a member at arm a from the centre of mass: x + a, v + w x a, w).
 // In a rotating frame the centrifugal, Euler and Coriolis forces act at the centre of mass; their
 // torque about it (from the field's change over the body: of order the body's size over its
@@ -37,9 +37,10 @@ DriftReport bodies_first_half_kick_and_drift(RigidBodies& bodies, Particles& par
 // F = sum f_i, T = sum (a_i x f_i + t_i), with the arms of the last placement.
 void reduce_member_loads(RigidBodies& bodies, const Particles& particles);
 
-// The second half kick: v += h (F/m + g), L = retention (L + h T) (in a rotating frame then the
-// frame's acceleration at the centre of mass and the Coriolis turn, as FrameSecondHalfKick); the
-// members' velocities and spins follow. Returns 1 when a body's velocity or momentum is not finite.
+// The second half kick, each body's loads first reduced from its members' (reduce_member_loads, in
+// the same pass): v += h (F/m + g), L = retention (L + h T) (in a rotating frame then the frame's
+// acceleration at the centre of mass and the Coriolis turn, as FrameSecondHalfKick); the members'
+// velocities and spins follow. Returns 1 when a body's velocity or momentum is not finite.
 int bodies_second_half_kick(RigidBodies& bodies, Particles& particles, const BodyKick& kick);
 
 // The members' positions and arms (when `positions`; else the arms of the last placement),

@@ -76,7 +76,7 @@ void RigidBodies::follow_particle_permutation(const std::vector<std::uint32_t>& 
     apply_permutation(angular_momentum, body_order);
     apply_permutation(force, body_order);
     apply_permutation(torque, body_order);
-    if (spin.size() == n) apply_permutation(spin, body_order);
+    if (inverse_inertia.size() == n) apply_permutation(inverse_inertia, body_order);
     // The members' arrays, body by body in the new order.
     const bool with_arms = arm.size() == member_count();
     std::vector<std::uint32_t> new_first(n + 1, 0);

@@ -23,6 +23,15 @@ namespace trapdem {
 
 inline constexpr std::uint32_t kNoBody = ~0u;
 
+// A symmetric 3x3 matrix by its six entries: a body's inverse inertia tensor in the space frame.
+struct SymmetricMatrix3 {
+  double xx = 0.0, yy = 0.0, zz = 0.0, xy = 0.0, xz = 0.0, yz = 0.0;
+  Vec3 operator*(const Vec3& v) const {
+    return {xx * v.x + xy * v.y + xz * v.z, xy * v.x + yy * v.y + yz * v.z, xz * v.x + yz * v.y + zz * v.z};
+  }
+  bool operator==(const SymmetricMatrix3&) const = default;
+};
+
 struct RigidBodies {
   // Per body.
   std::vector<std::int64_t> id;             // stable identity
@@ -46,9 +55,10 @@ struct RigidBodies {
   std::vector<std::uint32_t> body_of_particle;
   // Workspaces of the step (body_motion.cpp), valid from a placement of the members to the next
   // turn of the bodies: each member's arm (m, centre of mass to its centre, space frame) and each
-  // body's angular velocity (rad/s, space frame).
+  // body's inverse inertia tensor in the space frame (kg^-1 m^-2, J = R I^-1 R^T: the angular
+  // velocity is J L; the second half kick reuses it, as the kick turns no body).
   std::vector<Vec3> arm;
-  std::vector<Vec3> spin;
+  std::vector<SymmetricMatrix3> inverse_inertia;
 
   std::size_t size() const { return id.size(); }
   bool empty() const { return id.empty(); }
