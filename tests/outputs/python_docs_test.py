@@ -12,11 +12,13 @@ import traceback
 
 doc, run = sys.argv[1], os.path.abspath(sys.argv[2])
 text = open(doc, encoding="utf-8").read()
+first_line = 1  # of text in the document, for the blocks' line numbers
 if sys.argv[3:] == ["--without-the-module"]:
     heading = "\n# Reading the files without the module\n"
     if heading not in text:
         sys.exit(f"{doc}: no heading '{heading.strip()}'")
-    text = text[text.index(heading):]
+    first_line += text[: text.index(heading)].count("\n") + 1
+    text = text[text.index(heading) + 1:]
 elif sys.argv[3:]:
     sys.exit("usage: python_docs_test.py DOC.md RUN_DIR [--without-the-module]")
 blocks = re.findall(r"^```python\n(.*?)^```", text, flags=re.S | re.M)
@@ -29,7 +31,7 @@ with tempfile.TemporaryDirectory(prefix="trapdem-python-docs-") as work:
     os.chdir(work)
     namespace = {"__name__": "__main__"}
     for k, block in enumerate(blocks, 1):
-        line = text[: text.index(block)].count("\n") + 1
+        line = first_line + text[: text.index(block)].count("\n")
         print(f"--- block {k} ({doc}:{line})")
         try:
             exec(compile(block, f"{doc}:block{k}", "exec"), namespace)
