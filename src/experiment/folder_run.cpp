@@ -68,6 +68,15 @@ void describe_run(RunLog& recorder, const ExperimentConfig& c, const fs::path& o
     recorder.say(fmt::format("  shape: {}; sizes are volume-equivalent diameters", c.material.shape.describe()));
   for (const std::string& key : c.material.unread_parameters)
     recorder.say(fmt::format("  note: {} is given but not read by its contact law", key));
+  // The constant torque's one-step bound lets a contact under a steady torque creep at T dt / I, so
+  // its strength in shear depends on the step (docs/element.md, "Rolling resistance and the time
+  // step"); mu_r 0.001 (Calibrated) does not matter, mu_r 0.2 does.
+  const ContactLaw& law = c.material.particle;
+  if (law.rolling_model == RollingModel::constant_torque && law.rolling_friction >= 0.01)
+    recorder.say(fmt::format("  note: constant_torque rolling resistance is weaker at a longer step (here step / mean "
+                             "diameter = {:.2g}; RF3 at 50 kPa: phi'_cs 31.5 deg at 3.9e-4, 24.0 at 2.7e-3, 36.8 at 7.5e-5; "
+                             "docs/element.md): state its element-test strength at this step, or use elastic_plastic",
+                             c.time_step() / c.material.sizes.mean_diameter()));
   recorder.say(fmt::format("  time step {:.4g} s ({:.3g} of the critical {:.4g} s), skin {:.3g} mm, {} g, {}",
                            c.time_step(), c.time_step() / c.critical_time_step(), c.critical_time_step(),
                            c.skin() * 1e3, c.spin_up.g_level, threads_text(omp_get_max_threads())));

@@ -8,6 +8,8 @@
 #include <filesystem>
 #include <fstream>
 #include <string>
+#include <utility>
+#include <vector>
 
 #include "../io/io_test_support.hpp"
 #include "core/errors.hpp"
@@ -44,6 +46,30 @@ TEST(RunLog, TheFirstLineIsTheRunsDescriptionAndAnErrorIsLogged) {
   const std::string after = read_all(dir / "run" / "run.log");
   EXPECT_NE(after.find("trapdem run --resume " + (dir / "run").string()), std::string::npos) << after;
   EXPECT_NE(after.find("stopped by an error: cannot read the configuration file"), std::string::npos) << after;
+}
+
+// The constant torque's strength depends on the step (docs/element.md): run.log says so, with the
+// step over the mean diameter, when its mu_r matters; not for elastic_plastic (the tiny preset's)
+// nor for a mu_r of 0.001 (Calibrated's).
+TEST(RunLog, AConstantTorqueRunNotesItsStepOverTheDiameter) {
+  const std::string note = "note: constant_torque rolling resistance is weaker at a longer step";
+  for (const auto& [overrides, expected] : std::vector<std::pair<std::vector<std::string>, bool>>{
+           {{}, false},
+           {{"contact.rolling_model=\"constant_torque\""}, true},
+           {{"contact.rolling_model=\"constant_torque\"", "contact.rolling_friction=0.001"}, false}}) {
+    ScratchDir dir;
+    FolderRunOptions o;
+    o.config_file = kTiny;
+    o.out_dir = dir / "run";
+    o.overrides = overrides;
+    o.quiet = true;
+    o.threads = 1;
+    o.stop_at_step = 1;
+    EXPECT_FALSE(run_in_folder(o));
+    const std::string log = read_all(dir / "run" / "run.log");
+    EXPECT_EQ(log.find(note) != std::string::npos, expected) << log;
+    if (expected) EXPECT_NE(log.find("step / mean diameter = "), std::string::npos) << log;
+  }
 }
 
 TEST(RunLog, AFullDiskStopsTheRunAtTheFirstLine) {
