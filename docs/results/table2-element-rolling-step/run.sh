@@ -46,6 +46,12 @@ for dt in 4.02e-6 3e-7 1.5e-7; do
   run "rf3-paper-dt$dt" paper-rf3 "${soft[@]}" --set numerics.time_step=$dt
 done
 run rf2-epsd-dt6e-7 paper-rf2 "${soft[@]}" --set contact.rolling_model=elastic_plastic --set numerics.time_step=6e-7
+# RF3 with EPSD at 5e4 N/m stops on the overlap guard (rf3-epsd.log); at half the step it stops at the same
+# moment of the shear (t = 0.026-0.027 s, ~10-15 % axial strain), so the cause is the load, not the step
+run rf3-epsd-dt1.34e-6 paper-rf3 "${soft[@]}" --set contact.rolling_model=elastic_plastic --set numerics.time_step=1.34e-6
+for c in rf1 rf2 rf3; do  # EPSD at the preset stiffness (1e6 N/m) and its step
+  run "$c-epsd-preset-stiffness" "paper-$c" --set contact.rolling_model=elastic_plastic
+done
 rf3_on_demo=(--set contact.kinetic_friction=0.5 --set contact.rolling_friction=0.4)
 run demo-rf3-dtdefault demo "${rf3_on_demo[@]}"
 run demo-rf3-dt3e-7 demo "${rf3_on_demo[@]}" --set numerics.time_step=3e-7
