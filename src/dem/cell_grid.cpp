@@ -51,6 +51,9 @@ CellGrid CellGrid::covering(const std::vector<Vec3>& positions, const Domain& do
 int CellGrid::neighbours(std::uint32_t cell, std::array<std::uint32_t, 27>& out) const {
   int centre[3];
   for (int a = 0; a < 3; ++a) centre[a] = int((cell / stride[a]) % std::size_t(count[a]));
+  // A periodic axis of one or two cells reaches the same cell twice: only then are repeats looked for.
+  bool may_repeat = false;
+  for (int a = 0; a < 3; ++a) may_repeat = may_repeat || (periodic[a] && count[a] < 3);
   int n = 0;
   for (int dz = -1; dz <= 1; ++dz) {
     int z = centre[2] + dz;
@@ -65,7 +68,7 @@ int CellGrid::neighbours(std::uint32_t cell, std::array<std::uint32_t, 27>& out)
         if (periodic[0]) x = (x + count[0]) % count[0];
         else if (x < 0 || x >= count[0]) continue;
         const auto c = static_cast<std::uint32_t>(x * stride[0] + y * stride[1] + z * stride[2]);
-        if (std::find(out.begin(), out.begin() + n, c) == out.begin() + n) out[n++] = c;
+        if (!may_repeat || std::find(out.begin(), out.begin() + n, c) == out.begin() + n) out[n++] = c;
       }
     }
   }
