@@ -5,7 +5,7 @@
 # 2011 type C), at several steps and three specimen seeds each:
 #   rf1-{torque,epsd}-dtX-seedS   the paper-scale runs' stiffness (k_n 5e4 N/m, 2 mm spheres); X from
 #                                 5.36e-6 s (paper-fast's step) down to 6.7e-7 s
-#   demo-rf1-epsd-dtX-seedS       the demo preset's 4 mm spheres at k_n 1e6 N/m, at the demo's own
+#   demo-rf1-MODEL-dtX-seedS      the demo preset's 4 mm spheres at k_n 1e6 N/m, at the demo's own
 #                                 step (1.56e-6 s) and at 3e-7 s
 # The protocol of docs/element.md's tables (1000 spheres, I = 2e-3, to 25 % axial strain, dense and loose).
 # Usage: bash run.sh TRAPDEM OUT_DIR   (4-90 s a run on one core; a finished run is skipped)
@@ -36,4 +36,7 @@ for seed in 1 2 3; do
   rf1_on_demo=(--set contact.kinetic_friction=0.2 --set contact.rolling_friction=0.2 "${epsd[@]}" --set element.seed=$seed)
   run "demo-rf1-epsd-dtdefault-seed$seed" demo "${rf1_on_demo[@]}"
   run "demo-rf1-epsd-dt3e-7-seed$seed" demo "${rf1_on_demo[@]}" --set numerics.time_step=3e-7
+  rf1_torque_on_demo=(--set contact.kinetic_friction=0.2 --set contact.rolling_friction=0.2 --set element.seed=$seed)
+  run "demo-rf1-torque-dtdefault-seed$seed" demo "${rf1_torque_on_demo[@]}"
+  run "demo-rf1-torque-dt3e-7-seed$seed" demo "${rf1_torque_on_demo[@]}" --set numerics.time_step=3e-7
 done
