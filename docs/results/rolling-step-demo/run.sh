@@ -11,8 +11,12 @@ trapdem=${2:-build/apps/trapdem}
 out=trapdem-out/rolling-step-demo
 rf3=(--set contact.static_friction=0.18 --set contact.kinetic_friction=0.5 --set contact.rolling_friction=0.4)
 rf2=(--set contact.static_friction=0.18 --set contact.kinetic_friction=0.5 --set contact.rolling_friction=0.2)
-from=(--set "packing.from=\"$PWD/$out/calibrated-deposit\"" --set 'packing.format="trapdem"' --set packing.snapshot=1
-      --set 'packing.start_stage="settling"')
+rf1=(--set contact.static_friction=0.18 --set contact.kinetic_friction=0.2 --set contact.rolling_friction=0.2)
+from_deposit() {  # the options that start a run from a deposit's snapshot 1 (settled at 1 g)
+  from=(--set "packing.from=\"$PWD/$out/$1\"" --set 'packing.format="trapdem"' --set packing.snapshot=1
+        --set 'packing.start_stage="settling"')
+}
+from_deposit calibrated-deposit
 run() {  # folder, options: a finished run is skipped, a stopped one resumed
   local folder=$out/$1; shift
   if [ -f "$folder/run.json" ] && grep -q '"complete": true' "$folder/run.json"; then return 0; fi
@@ -25,3 +29,17 @@ run rf3-step-default "${rf3[@]}" "${from[@]}"
 run rf3-step-3e-7 "${rf3[@]}" "${from[@]}" --set numerics.time_step=3e-7
 run rf2-step-default "${rf2[@]}" "${from[@]}"
 run rf2-step-3e-7 "${rf2[@]}" "${from[@]}" --set numerics.time_step=3e-7
+run rf1-step-default "${rf1[@]}" "${from[@]}"
+run rf1-step-3e-7 "${rf1[@]}" "${from[@]}" --set numerics.time_step=3e-7
+# RF1's friction with the elastic-plastic rolling spring (EPSD): in the element test its strength does
+# not move with the step (phi'_peak / phi'_cs 46.1 / 31.8 deg at the demo's step, 47.1 / 33.4 at 3e-7 s,
+# three specimens each; docs/element.md), near Table 1's sands
+epsd=(--set contact.rolling_model=elastic_plastic)
+run rf1-epsd-step-default "${rf1[@]}" "${epsd[@]}" "${from[@]}"
+run rf1-epsd-step-3e-7 "${rf1[@]}" "${epsd[@]}" "${from[@]}" --set numerics.time_step=3e-7
+# The RF3 A/B again from a second deposit (pour seed 2020): is the step's effect larger than the
+# packings' spread?
+run calibrated-deposit-2020 --set pluviation.seed=2020
+from_deposit calibrated-deposit-2020
+run rf3-step-default-2020 "${rf3[@]}" "${from[@]}"
+run rf3-step-3e-7-2020 "${rf3[@]}" "${from[@]}" --set numerics.time_step=3e-7
