@@ -43,3 +43,11 @@ run calibrated-deposit-2020 --set pluviation.seed=2020
 from_deposit calibrated-deposit-2020
 run rf3-step-default-2020 "${rf3[@]}" "${from[@]}"
 run rf3-step-3e-7-2020 "${rf3[@]}" "${from[@]}" --set numerics.time_step=3e-7
+# RF1 with EPSD and with the constant torque from the second and a third deposit (pour seed 2021):
+# does EPSD's near-vertical pair of bands repeat, beside the constant torque's from the same deposits?
+run rf1-epsd-step-default-2020 "${rf1[@]}" "${epsd[@]}" "${from[@]}"
+run rf1-step-default-2020 "${rf1[@]}" "${from[@]}"
+run calibrated-deposit-2021 --set pluviation.seed=2021
+from_deposit calibrated-deposit-2021
+run rf1-epsd-step-default-2021 "${rf1[@]}" "${epsd[@]}" "${from[@]}"
+run rf1-step-default-2021 "${rf1[@]}" "${from[@]}"
