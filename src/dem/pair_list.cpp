@@ -50,7 +50,7 @@ void build_pairs(const Particles& p, const CellSort& cells, const Domain& domain
         stencil_of = cell;
       }
       // Every candidate is written and kept only when within reach: no branch on the distance,
-      // which is at random (~1 candidate in 5 is kept in a bed).
+      // which keeps a minority of the candidates, at random (a mispredicted branch each kept pair).
       if (mine.size() < used + stencil_particles) mine.resize(2 * (used + stencil_particles));
       const std::size_t before = used;
       const Vec3 xi = p.position[i];

@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <filesystem>
 #include <fstream>
+#include <stdexcept>
 
 #include <fmt/format.h>
 #include <fmt/ranges.h>
@@ -243,7 +244,7 @@ TEST(StudyDefinition, TheEqualDensityPaperStudyIsPaperFastFromTheCalibratedDepos
   std::erase_if(set, [](const std::string& o) { return o.starts_with("packing."); });
   auto resolved = [](const StudyDefinition& s, const std::string& name, const StudyScale& at) {
     const auto c = std::find_if(s.cases.begin(), s.cases.end(), [&](const StudyCase& k) { return k.name == name; });
-    EXPECT_NE(c, s.cases.end()) << name;
+    if (c == s.cases.end()) throw std::runtime_error(s.name + " has no case " + name);  // fails the test
     return Config::parse(resolved_case_configuration(*c, at, app::preset_directory()), name);
   };
   const StudyScale& fast = table2.scale("paper-fast");
