@@ -2,7 +2,10 @@
 //   * ContactEvaluator::evaluate(): the contact law on a batch of prepared contacts (no neighbour access), per
 //     rolling model (0 none, 1 constant torque, 2 elastic-plastic EPSD as in the standard benchmark);
 //   * the neighbour-list build: sort_into_cells() + build_pairs() on a random (jittered lattice)
-//     packing of 2 mm spheres with the standard benchmark's skin, for N and the OpenMP thread count.
+//     packing of 2 mm spheres with the standard benchmark's skin, for N and the OpenMP thread count;
+//   * the whole list rebuild of the engine (Simulation::rebuild_lists: the histories archived by
+//     particle id, the cell sort, the re-order, the pair and wall lists, the histories restored) on
+//     the same packing pressed into contact (six touching neighbours a particle, each with a history).
 // Run: build/bench/kernels [--benchmark_filter=...]
 #include <benchmark/benchmark.h>
 #include <omp.h>
@@ -16,6 +19,8 @@
 #include "dem/cell_sort.hpp"
 #include "dem/pair_list.hpp"
 #include "dem/particles.hpp"
+#include "dem/simulation.hpp"
+#include "standard_problem.hpp"
 
 using namespace trapdem;
 
@@ -120,8 +125,8 @@ struct Packing {
   Domain domain;
 };
 
-Packing make_packing(std::size_t n_target) {
-  const double spacing = 2.05e-3, depth = 0.0182, height = 0.094;
+Packing make_packing(std::size_t n_target, double spacing = 2.05e-3) {
+  const double depth = 0.0182, height = 0.094;
   const int ny = static_cast<int>(depth / spacing), nz = static_cast<int>(height / spacing);
   const int nx = static_cast<int>(std::ceil(double(n_target) / (ny * nz)));
   std::mt19937_64 rng(7);
@@ -166,6 +171,30 @@ void BM_SortIntoCells(benchmark::State& state) {
   state.SetItemsProcessed(state.iterations() * std::int64_t(pk.particles.size()));
 }
 BENCHMARK(BM_SortIntoCells)->Arg(20000)->Arg(80000)->Unit(benchmark::kMillisecond)->UseRealTime();
+
+// The engine's rebuild on a bed in contact: the lattice at 1.995 mm (5 um overlaps), so that every
+// rebuild archives and restores ~3 histories a particle; the standard problem's law and walls, no
+// gravity. Each iteration invalidates the lists and steps once; the rebuild's own wall clock
+// (SimulationStats::rebuild_seconds) is the counter `rebuild_ms`, the whole step's the time.
+void BM_ListRebuild(benchmark::State& state) {
+  Packing pk = make_packing(static_cast<std::size_t>(state.range(0)), 1.995e-3);
+  omp_set_num_threads(static_cast<int>(state.range(1)));
+  const double width = pk.domain.upper.x;
+  Simulation sim = standard_problem(std::move(pk.particles), width);
+  sim.set_gravity(Vec3{0.0, 0.0, 0.0});
+  sim.step();  // the contacts and their histories
+  const double before = sim.stats().rebuild_seconds;
+  for (auto _ : state) {
+    sim.particles_mutable();  // the lists invalid: the next step rebuilds them
+    sim.step();
+  }
+  state.SetItemsProcessed(state.iterations() * std::int64_t(sim.particles().size()));
+  state.counters["rebuild_ms"] = 1e3 * (sim.stats().rebuild_seconds - before) / double(state.iterations());
+  state.counters["contacts/particle"] = double(sim.contact_count()) / double(sim.particles().size());
+}
+// A fixed count of iterations: the bed relaxes from step to step, so every binary times the same steps.
+BENCHMARK(BM_ListRebuild)->Args({80000, 1})->Args({80000, 2})->Args({300000, 1})->Args({300000, 2})
+    ->Iterations(10)->Unit(benchmark::kMillisecond)->UseRealTime();
 
 }  // namespace
 

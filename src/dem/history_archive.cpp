@@ -1,9 +1,12 @@
 #include "dem/history_archive.hpp"
 
+#include <omp.h>
+
 #include <algorithm>
 #include <numeric>
-#include <optional>
 #include <utility>
+
+#include "dem/thread_block.hpp"
 
 namespace trapdem {
 
@@ -14,18 +17,37 @@ ContactHistory flipped(ContactHistory h) {
   return h;
 }
 
-// Archives pair k's history history_of(k) for the listed pairs whose history_of(k) is not null.
-template <class HistoryOf>
-void archive_pairs(const PairList& list, const std::vector<std::int64_t>& id, HistoryOf history_of,
+// Archives pair k's history history_of(k) for the listed pairs that touch (touching(k)), in list
+// order, by thread blocks of owners: each thread counts its block's, then writes them into place in
+// `pairs` (its storage reused from the last call: a fresh vector of ~40 MB at 300k particles costs
+// more in page faults than the copy).
+template <class Touching, class HistoryOf>
+void archive_pairs(const PairList& list, const std::vector<std::int64_t>& id, Touching touching, HistoryOf history_of,
                    std::vector<HistoryArchive::PairRecord>& pairs) {
-  pairs.clear();
   const std::size_t n = list.first.empty() ? 0 : list.first.size() - 1;
-  for (std::size_t i = 0; i < n; ++i) {
-    for (std::uint32_t k = list.first[i]; k < list.first[i + 1]; ++k) {
-      const std::optional<ContactHistory> h = history_of(k);
-      if (!h) continue;
-      const std::int64_t a = id[i], b = id[list.partner[k]];
-      pairs.push_back(a < b ? HistoryArchive::PairRecord{a, b, *h} : HistoryArchive::PairRecord{b, a, flipped(*h)});
+  std::vector<std::size_t> offset(static_cast<std::size_t>(omp_get_max_threads()) + 1, 0);
+#pragma omp parallel
+  {
+    const int me = omp_get_thread_num(), threads = omp_get_num_threads();
+    const auto [begin, end] = thread_block(n, me, threads);
+    const std::uint32_t k_begin = n ? list.first[begin] : 0, k_end = n ? list.first[end] : 0;
+    std::size_t mine = 0;
+    for (std::uint32_t k = k_begin; k < k_end; ++k) mine += touching(k) ? 1 : 0;
+    offset[std::size_t(me) + 1] = mine;
+#pragma omp barrier
+#pragma omp single
+    {
+      std::partial_sum(offset.begin(), offset.begin() + threads + 1, offset.begin());
+      pairs.resize(offset[std::size_t(threads)]);
+    }
+    std::size_t at = offset[std::size_t(me)];
+    for (std::size_t i = begin; i < end; ++i) {
+      for (std::uint32_t k = list.first[i]; k < list.first[i + 1]; ++k) {
+        if (!touching(k)) continue;
+        const ContactHistory h = history_of(k);
+        const std::int64_t a = id[i], b = id[list.partner[k]];
+        pairs[at++] = a < b ? HistoryArchive::PairRecord{a, b, h} : HistoryArchive::PairRecord{b, a, flipped(h)};
+      }
     }
   }
 }
@@ -33,53 +55,41 @@ void archive_pairs(const PairList& list, const std::vector<std::int64_t>& id, Hi
 
 void HistoryArchive::store_pairs(const PairList& list, const ContactSlots& slot, const PairHistories& contacts,
                                  const std::vector<std::int64_t>& id) {
-  archive_pairs(list, id, [&](std::uint32_t k) {
-    return slot[k] == kNoContact ? std::nullopt : std::optional<ContactHistory>(contacts.get(slot[k]));
-  }, pairs);
+  archive_pairs(list, id, [&](std::uint32_t k) { return slot[k] != kNoContact; },
+                [&](std::uint32_t k) { return contacts.get(slot[k]); }, pairs);
 }
 
 void HistoryArchive::store_pairs(const PairList& list, const std::vector<std::int64_t>& id) {
-  archive_pairs(list, id, [&](std::uint32_t k) {
-    return list.history[k].touching() ? std::optional<ContactHistory>(list.history[k]) : std::nullopt;
-  }, pairs);
+  archive_pairs(list, id, [&](std::uint32_t k) { return list.history[k].touching(); },
+                [&](std::uint32_t k) { return list.history[k]; }, pairs);
 }
 
-namespace {
-// The current index of each particle id: a table when the ids are dense (the usual 1..N, any
-// order), else a search in the ids sorted.
-class IndexOfId {
- public:
-  static constexpr std::uint32_t kAbsent = ~0u;
-  explicit IndexOfId(const std::vector<std::int64_t>& id) {
-    if (id.empty()) return;
-    const auto [lo, hi] = std::minmax_element(id.begin(), id.end());
-    lowest_ = *lo;
-    const auto range = static_cast<std::uint64_t>(*hi) - static_cast<std::uint64_t>(*lo);
-    if (range < 4 * std::uint64_t(id.size()) + 64) {
-      table_.assign(range + 1, kAbsent);
-      for (std::size_t i = 0; i < id.size(); ++i) table_[std::size_t(id[i] - lowest_)] = std::uint32_t(i);
-    } else {
-      sorted_.reserve(id.size());
-      for (std::size_t i = 0; i < id.size(); ++i) sorted_.push_back({id[i], std::uint32_t(i)});
-      std::sort(sorted_.begin(), sorted_.end());
-    }
+void HistoryArchive::IndexOfId::index(const std::vector<std::int64_t>& id) {
+  table_.clear();
+  sorted_.clear();
+  if (id.empty()) return;
+  const auto [lo, hi] = std::minmax_element(id.begin(), id.end());
+  lowest_ = *lo;
+  const auto range = static_cast<std::uint64_t>(*hi) - static_cast<std::uint64_t>(*lo);
+  if (range < 4 * std::uint64_t(id.size()) + 64) {
+    table_.assign(range + 1, kAbsent);
+    for (std::size_t i = 0; i < id.size(); ++i) table_[std::size_t(id[i] - lowest_)] = std::uint32_t(i);
+  } else {
+    sorted_.reserve(id.size());
+    for (std::size_t i = 0; i < id.size(); ++i) sorted_.push_back({id[i], std::uint32_t(i)});
+    std::sort(sorted_.begin(), sorted_.end());
   }
-  std::uint32_t operator()(std::int64_t particle_id) const {
-    if (!table_.empty()) {
-      if (particle_id < lowest_) return kAbsent;
-      const auto at = static_cast<std::uint64_t>(particle_id) - static_cast<std::uint64_t>(lowest_);
-      return at < table_.size() ? table_[at] : kAbsent;
-    }
-    auto it = std::lower_bound(sorted_.begin(), sorted_.end(), std::pair<std::int64_t, std::uint32_t>{particle_id, 0});
-    return it != sorted_.end() && it->first == particle_id ? it->second : kAbsent;
-  }
+}
 
- private:
-  std::int64_t lowest_ = 0;
-  std::vector<std::uint32_t> table_;
-  std::vector<std::pair<std::int64_t, std::uint32_t>> sorted_;
-};
-}  // namespace
+std::uint32_t HistoryArchive::IndexOfId::operator()(std::int64_t particle_id) const {
+  if (!table_.empty()) {
+    if (particle_id < lowest_) return kAbsent;
+    const auto at = static_cast<std::uint64_t>(particle_id) - static_cast<std::uint64_t>(lowest_);
+    return at < table_.size() ? table_[at] : kAbsent;
+  }
+  auto it = std::lower_bound(sorted_.begin(), sorted_.end(), std::pair<std::int64_t, std::uint32_t>{particle_id, 0});
+  return it != sorted_.end() && it->first == particle_id ? it->second : kAbsent;
+}
 
 void HistoryArchive::store_walls(const WallList& list, const std::vector<std::int64_t>& id) {
   walls.clear();
@@ -87,42 +97,35 @@ void HistoryArchive::store_walls(const WallList& list, const std::vector<std::in
   for (std::size_t i = 0; i < n; ++i)
     for (std::uint32_t k = list.first[i]; k < list.first[i + 1]; ++k)
       if (list.history[k].touching()) walls.push_back({id[i], list.wall[k], list.history[k]});
-  std::sort(walls.begin(), walls.end(), [](const WallRecord& x, const WallRecord& y) {
-    return x.particle != y.particle ? x.particle < y.particle : x.wall < y.wall;
-  });
 }
 
 std::size_t HistoryArchive::restore_pairs(const PairList& list, const std::vector<std::int64_t>& id,
-                                          ContactSlots& slot, PairHistories& contacts) const {
+                                          ContactSlots& slot, PairHistories& contacts) {
   const std::size_t n = list.first.size() - 1;
   slot.assign(list.size(), kNoContact);
   if (pairs.empty()) return 0;
   // Each record's pair in current indices, grouped by its owner (the lower index) with a counting
   // sort; then each owner's records, ordered by partner, merged with its listed partners (sorted).
-  const IndexOfId index_of(id);
-  struct Placed {
-    std::uint32_t partner;
-    std::uint32_t record;  // index into pairs, its high bit set when the owner is the record's `high`
-  };
+  index_of_.index(id);
   constexpr std::uint32_t kFlip = 1u << 31;
-  std::vector<std::uint32_t> start(n + 2, 0);
-  std::vector<std::uint32_t> owner(pairs.size(), IndexOfId::kAbsent);
-  std::vector<Placed> entry(pairs.size());
+  start_.assign(n + 2, 0);
+  owner_.assign(pairs.size(), IndexOfId::kAbsent);
+  entry_.resize(pairs.size());
   for (std::size_t r = 0; r < pairs.size(); ++r) {
-    const std::uint32_t a = index_of(pairs[r].low), b = index_of(pairs[r].high);
+    const std::uint32_t a = index_of_(pairs[r].low), b = index_of_(pairs[r].high);
     if (a == IndexOfId::kAbsent || b == IndexOfId::kAbsent) continue;  // a particle removed
-    owner[r] = std::min(a, b);
-    entry[r] = {std::max(a, b), std::uint32_t(r) | (a > b ? kFlip : 0u)};
-    ++start[owner[r] + 2];
+    owner_[r] = std::min(a, b);
+    entry_[r] = {std::max(a, b), std::uint32_t(r) | (a > b ? kFlip : 0u)};
+    ++start_[owner_[r] + 2];
   }
-  std::partial_sum(start.begin(), start.end(), start.begin());
-  std::vector<Placed> placed(start[n + 1]);
+  std::partial_sum(start_.begin(), start_.end(), start_.begin());
+  placed_.resize(start_[n + 1]);
   for (std::size_t r = 0; r < pairs.size(); ++r)
-    if (owner[r] != IndexOfId::kAbsent) placed[start[owner[r] + 1]++] = entry[r];
+    if (owner_[r] != IndexOfId::kAbsent) placed_[start_[owner_[r] + 1]++] = entry_[r];
   std::uint32_t found = 0;
   for (std::size_t i = 0; i < n; ++i) {
-    Placed* mine = placed.data() + start[i];
-    Placed* mine_end = placed.data() + start[i + 1];
+    Placed* mine = placed_.data() + start_[i];
+    Placed* mine_end = placed_.data() + start_[i + 1];
     std::sort(mine, mine_end, [](const Placed& x, const Placed& y) { return x.partner < y.partner; });
     for (std::uint32_t k = list.first[i]; k < list.first[i + 1] && mine != mine_end; ++k) {
       while (mine != mine_end && mine->partner < list.partner[k]) ++mine;  // no longer within reach
@@ -136,18 +139,18 @@ std::size_t HistoryArchive::restore_pairs(const PairList& list, const std::vecto
   return found;
 }
 
-void HistoryArchive::restore_walls(WallList& list, const std::vector<std::int64_t>& id) const {
-  const std::size_t n = list.first.size() - 1;
+void HistoryArchive::restore_walls(WallList& list, const std::vector<std::int64_t>& id) {
   list.history.assign(list.size(), ContactHistory{});
   if (walls.empty()) return;
-  for (std::size_t i = 0; i < n; ++i) {
-    for (std::uint32_t k = list.first[i]; k < list.first[i + 1]; ++k) {
-      const WallRecord key{id[i], list.wall[k], {}};
-      auto it = std::lower_bound(walls.begin(), walls.end(), key, [](const WallRecord& x, const WallRecord& y) {
-        return x.particle != y.particle ? x.particle < y.particle : x.wall < y.wall;
-      });
-      if (it != walls.end() && it->particle == key.particle && it->wall == key.wall) list.history[k] = it->history;
-    }
+  // Each record to its particle's current index, then to that particle's candidate of the same
+  // wall (a particle has at most kMaxWallCandidates): linear in the records.
+  index_of_.index(id);
+  const std::size_t n = list.first.size() - 1;
+  for (const WallRecord& r : walls) {
+    const std::uint32_t i = index_of_(r.particle);
+    if (i == IndexOfId::kAbsent || i >= n) continue;  // removed, or a ghost (no wall candidates)
+    for (std::uint32_t k = list.first[i]; k < list.first[i + 1]; ++k)
+      if (list.wall[k] == r.wall) list.history[k] = r.history;
   }
 }
 

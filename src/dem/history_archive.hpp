@@ -2,6 +2,7 @@
 // The contact histories keyed by particle ids, to survive a list rebuild in which indices change
 // (re-ordering, particles added or removed).
 #include <cstdint>
+#include <utility>
 #include <vector>
 
 #include "dem/contact/contact_history.hpp"
@@ -21,9 +22,11 @@ class HistoryArchive {
   void store_walls(const WallList& walls, const std::vector<std::int64_t>& id);
   // Into the compact form: slot[k] for every listed pair; the histories found packed at the front of
   // `contacts` (room for pairs.size() entries) in pair order. Returns how many were found.
+  // Not const: it works in arrays kept from one call to the next (a rebuild at 300k particles
+  // would otherwise fault ~60 MB of fresh pages in).
   std::size_t restore_pairs(const PairList& pairs, const std::vector<std::int64_t>& id, ContactSlots& slot,
-                            PairHistories& contacts) const;
-  void restore_walls(WallList& walls, const std::vector<std::int64_t>& id) const;
+                            PairHistories& contacts);
+  void restore_walls(WallList& walls, const std::vector<std::int64_t>& id);
 
   struct PairRecord {
     std::int64_t low, high;   // ids, low < high; the history is expressed for `low` as body i
@@ -36,6 +39,30 @@ class HistoryArchive {
   };
   std::vector<PairRecord> pairs;
   std::vector<WallRecord> walls;
+
+  // The current index of each particle id: a table when the ids are dense (the usual 1..N, any
+  // order), else a search in the ids sorted. Its arrays are reused by the next index().
+  class IndexOfId {
+   public:
+    static constexpr std::uint32_t kAbsent = ~0u;
+    void index(const std::vector<std::int64_t>& id);
+    std::uint32_t operator()(std::int64_t particle_id) const;
+
+   private:
+    std::int64_t lowest_ = 0;
+    std::vector<std::uint32_t> table_;
+    std::vector<std::pair<std::int64_t, std::uint32_t>> sorted_;
+  };
+
+ private:
+  // restore_pairs' work arrays (history_archive.cpp), kept between calls.
+  struct Placed {
+    std::uint32_t partner;
+    std::uint32_t record;  // index into pairs, its high bit set when the owner is the record's `high`
+  };
+  IndexOfId index_of_;
+  std::vector<std::uint32_t> start_, owner_;
+  std::vector<Placed> entry_, placed_;
 };
 
 }  // namespace trapdem

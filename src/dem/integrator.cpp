@@ -17,6 +17,17 @@ double DisplacementsSinceBuild::pair_bound() const {
   return std::min(2.0 * std::sqrt(max_length2), std::sqrt(diagonal2));
 }
 
+double DisplacementsSinceBuild::wall_bound(const Vec3& wall_displacement) const {
+  // |d - D| is convex in d, so over the box its largest value is at a corner: per axis the
+  // farther of the two faces. An empty or untracked set (lowest = highest = 0) gives |D|.
+  double farthest2 = 0.0;
+  for (int a = 0; a < 3; ++a) {
+    const double to_face = std::max(std::fabs(highest[a] - wall_displacement[a]), std::fabs(lowest[a] - wall_displacement[a]));
+    farthest2 += to_face * to_face;
+  }
+  return std::min(std::sqrt(max_length2) + norm(wall_displacement), std::sqrt(farthest2));
+}
+
 void escape_bounds(const Domain& domain, Vec3& lo, Vec3& hi) {
   lo = domain.lower;
   hi = domain.upper;

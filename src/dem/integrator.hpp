@@ -24,6 +24,13 @@ struct DisplacementsSinceBuild {
   // then two of them do not approach each other, and one of them and one at rest approach by its
   // own displacement, not by twice the largest.
   double pair_bound() const;
+  // m, a bound on |d_i - D| over every particle, for a wall translated by D since the build (walls
+  // only translate: the distance from x + d to the wall moved by D is the distance from x + d - D
+  // to the wall, within |d - D| of the distance from x): the smaller of the largest length + |D|
+  // and the distance from D to the box's farthest corner. The box wins when the particles that move
+  // most move with the wall (a block riding a lowered trapdoor): the door and the block then do not
+  // approach, and the door and a particle at rest approach by the door's own travel.
+  double wall_bound(const Vec3& wall_displacement) const;
 };
 
 struct DriftReport {

@@ -359,15 +359,16 @@ void Simulation::integrate_positions() {
 // A pair not listed was at least the skin apart at the build (build_pairs), a particle not a wall's
 // candidate at least the skin from it (build_wall_candidates). A pair's gap shrinks by at most
 // |d_i - d_j| (bounded by DisplacementsSinceBuild::pair_bound), a particle's gap to a wall by at
-// most |d_i| + the wall's displacement (the distance to a rigidly moved wall is 1-Lipschitz in
-// both). Rebuilt when either bound could reach the skin: the lists then still hold every contact.
+// most |d_i - D| for the wall's translation D (DisplacementsSinceBuild::wall_bound). Rebuilt when
+// either bound could reach the skin: the lists then still hold every contact. And rebuilt when a
+// particle has moved more than the skin, even with the others: the build's bookkeeping (its
+// periodic image, and on a decomposition its rank) then never lags a particle by more than that.
 bool Simulation::lists_outdated(const DisplacementsSinceBuild& all) const {
-  if (!lists_valid_ || all.pair_bound() > skin_) return true;
-  double wall_moved2 = 0.0;
+  if (!lists_valid_ || all.pair_bound() > skin_ || all.max_length2 > skin_ * skin_) return true;
   for (std::size_t k = 0; k < state_.walls.size(); ++k)
-    wall_moved2 =
-        std::max(wall_moved2, norm2(state_.walls[k].displacement - state_.lists.wall_displacement_at_build[k]));
-  return std::sqrt(all.max_length2) + std::sqrt(wall_moved2) > skin_;
+    if (all.wall_bound(state_.walls[k].displacement - state_.lists.wall_displacement_at_build[k]) > skin_)
+      return true;
+  return false;
 }
 
 void Simulation::rebuild_lists() {
@@ -375,9 +376,10 @@ void Simulation::rebuild_lists() {
   const double started = omp_get_wtime();
   ++stats_.rebuilds;
   const Domain& dom = settings_.domain;
-  HistoryArchive archive;
+  HistoryArchive& archive = archive_;
   if (history_pending_) {
     archive = std::move(pending_history_);
+    pending_history_ = HistoryArchive{};
     history_pending_ = false;
   } else {
     archive.store_pairs(state_.lists.pairs, state_.lists.pair_contact, state_.lists.contacts, p.id);

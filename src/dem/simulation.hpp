@@ -208,6 +208,7 @@ class Simulation {
   std::unique_ptr<RotatingFrame> frame_;  // null: uniform gravity only
 
   HistoryArchive pending_history_;  // archived before particles were removed
+  HistoryArchive archive_;  // the rebuild's: its arrays reused from one rebuild to the next, not state
   bool history_pending_ = false;
   std::vector<ContactHistory> pair_history() const;  // per listed pair, from the compact form
   bool lists_valid_ = false;

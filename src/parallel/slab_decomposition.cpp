@@ -206,10 +206,6 @@ bool SlabDecomposition::migrate_one_hop(Particles& p, HistoryArchive& archive) {
     for (const auto& r : unpacker.get<HistoryArchive::PairRecord>()) archive.pairs.push_back(r);
     for (const auto& r : unpacker.get<HistoryArchive::WallRecord>()) archive.walls.push_back(r);
   }
-  std::sort(archive.walls.begin(), archive.walls.end(),
-            [](const HistoryArchive::WallRecord& x, const HistoryArchive::WallRecord& y) {
-              return x.particle != y.particle ? x.particle < y.particle : x.wall < y.wall;
-            });
   return moved;
 }
 

@@ -127,3 +127,67 @@ TEST(RebuildCriterion, ACloudMovingAsOneRebuildsOncePerSkin) {
   EXPECT_LE(std::fabs(double(sim.stats().rebuilds) - (1.0 + std::floor(per_skin))), 1.0)
       << sim.stats().rebuilds << " rebuilds over " << per_skin << " skins travelled";
 }
+
+// The wall bound (DisplacementsSinceBuild::wall_bound) against its two parts: the particles' box
+// from the door's travel D down to rest, as over a lowered trapdoor.
+TEST(RebuildCriterion, TheWallBoundIsTheFarthestCornerWhenTheParticlesRideTheWall) {
+  const Vec3 door{0.0, 0.0, -1.0e-3};  // m
+  const DisplacementsSinceBuild riding{1.0e-6, {0.0, 0.0, -1.0e-3}, {0.0, 0.0, 0.0}};
+  // The block on the door: the farthest corner (a particle at rest) is |D| from the door's
+  // travel, where the sum of the two lengths is twice that.
+  EXPECT_DOUBLE_EQ(riding.wall_bound(door), 1.0e-3);
+  EXPECT_DOUBLE_EQ(riding.wall_bound({0.0, 0.0, 0.0}), 1.0e-3);  // a fixed wall: the largest length
+  // A wall moving sideways while the particles sink: the corner (0, 0, -1 mm) against (1 mm, 0, 0)
+  EXPECT_DOUBLE_EQ(riding.wall_bound({1.0e-3, 0.0, 0.0}), std::sqrt(2.0) * 1.0e-3);
+  // Nothing tracked (no particle): the wall's own travel
+  EXPECT_DOUBLE_EQ(DisplacementsSinceBuild{}.wall_bound({0.0, 3.0e-4, 4.0e-4}), 5.0e-4);
+  // The largest length wins when the box is wide: particles moved 1 mm along each axis, both
+  // ways, past a fixed wall (the farthest corner is sqrt(3) mm away)
+  const DisplacementsSinceBuild spread{1.0e-6, {-1.0e-3, -1.0e-3, -1.0e-3}, {1.0e-3, 1.0e-3, 1.0e-3}};
+  EXPECT_DOUBLE_EQ(spread.wall_bound({0.0, 0.0, 0.0}), 1.0e-3);
+}
+
+// The cloud sliding along a fixed floor, pushed (without touching) by a wall that moves with it:
+// the floor needs a rebuild once per skin travelled, the pusher none; a criterion of the largest
+// displacement plus the wall's travel would rebuild twice as often.
+TEST(RebuildCriterion, AWallMovingWithTheCloudAddsNoRebuild) {
+  Particles p;
+  add_layers(p, 4, 3, 2.5 * kRadius, kRadius + 0.05e-3, {1.0, 0.0, 0.0}, 1);
+  Simulation sim(std::move(p), frictional_rolling_law(), settings_in(0.5));
+  sim.add_wall(Wall::plane("floor", {0, 0, 0}, {0, 0, 1}, frictional_rolling_law()));
+  Wall pusher = Wall::plane("pusher", {-5.0 * kRadius, 0, 0}, {1, 0, 0}, frictional_rolling_law());
+  pusher.velocity = [](double) { return Vec3{1.0, 0.0, 0.0}; };
+  sim.add_wall(std::move(pusher));
+  const int steps = 4000;
+  step_checking_lists(sim, steps, "a cloud and its pusher");
+  const double per_skin = 1.0 * steps * sim.time_step() / kSkin;
+  ASSERT_GT(per_skin, 10.0) << "too short a run to count rebuilds";
+  EXPECT_LE(std::fabs(double(sim.stats().rebuilds) - (1.0 + std::floor(per_skin))), 1.0)
+      << sim.stats().rebuilds << " rebuilds over " << per_skin << " skins travelled";
+}
+
+// A trapdoor lowered under a bed at 50 g: the block over the door follows it, the beds beside it
+// rest on the fixed base, and the particles at the door's edges shear past both. No contact with
+// a particle, the door or the base is missed at any step.
+TEST(RebuildCriterion, ABedOverALoweredTrapdoorMissesNoContact) {
+  Particles p;
+  add_layers(p, 6, 3, 2.0 * kRadius, kRadius, {}, 1);
+  Simulation sim(std::move(p), frictional_rolling_law(), settings_in(0.02));
+  const ContactLaw law = frictional_rolling_law();
+  const Vec3 x{1, 0, 0}, y{0, 1, 0};
+  sim.add_wall(Wall::rectangle("base-left", {-4.0 * kRadius, 0, 0}, x, 2.0 * kRadius, y, 0.01, law));
+  sim.add_wall(Wall::rectangle("base-right", {4.0 * kRadius, 0, 0}, x, 2.0 * kRadius, y, 0.01, law));
+  Wall door = Wall::rectangle("door", {0, 0, 0}, x, 2.0 * kRadius, y, 0.01, law);
+  door.velocity = [](double) { return Vec3{0.0, 0.0, -0.5}; };
+  sim.add_wall(std::move(door));
+  sim.add_wall(Wall::plane("left", {-6.0 * kRadius, 0, 0}, {1, 0, 0}, law));
+  sim.add_wall(Wall::plane("right", {6.0 * kRadius, 0, 0}, {-1, 0, 0}, law));
+  sim.add_wall(Wall::plane("front", {0, -6.0 * kRadius, 0}, {0, 1, 0}, law));
+  sim.add_wall(Wall::plane("back", {0, 6.0 * kRadius, 0}, {0, -1, 0}, law));
+  sim.set_gravity(Vec3{0.0, 0.0, -9.81 * 50.0});
+  const std::size_t touching = step_checking_lists(sim, 3000, "a bed over a lowered trapdoor");
+  EXPECT_GT(touching, 3000u) << "the bed's particles never touched";
+  const double travelled = 0.5 * 3000 * sim.time_step();  // m, the door's
+  EXPECT_GT(travelled, 5.0 * kSkin) << "the door moved too little to test the criterion";
+  EXPECT_GT(sim.stats().rebuilds, 5);
+}
