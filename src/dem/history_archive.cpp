@@ -101,12 +101,28 @@ void HistoryArchive::store_walls(const WallList& list, const std::vector<std::in
 
 std::size_t HistoryArchive::restore_pairs(const PairList& list, const std::vector<std::int64_t>& id,
                                           ContactSlots& slot, PairHistories& contacts) {
+  index_of_.index(id);
+  return restore_indexed_pairs(list, slot, contacts);
+}
+
+void HistoryArchive::restore_walls(WallList& list, const std::vector<std::int64_t>& id) {
+  index_of_.index(id);
+  restore_indexed_walls(list);
+}
+
+std::size_t HistoryArchive::restore(const PairList& pair_list, WallList& wall_list, const std::vector<std::int64_t>& id,
+                                    ContactSlots& slot, PairHistories& contacts) {
+  index_of_.index(id);
+  restore_indexed_walls(wall_list);
+  return restore_indexed_pairs(pair_list, slot, contacts);
+}
+
+std::size_t HistoryArchive::restore_indexed_pairs(const PairList& list, ContactSlots& slot, PairHistories& contacts) {
   const std::size_t n = list.first.size() - 1;
   slot.assign(list.size(), kNoContact);
   if (pairs.empty()) return 0;
   // Each record's pair in current indices, grouped by its owner (the lower index) with a counting
   // sort; then each owner's records, ordered by partner, merged with its listed partners (sorted).
-  index_of_.index(id);
   constexpr std::uint32_t kFlip = 1u << 31;
   start_.assign(n + 2, 0);
   owner_.assign(pairs.size(), IndexOfId::kAbsent);
@@ -139,12 +155,11 @@ std::size_t HistoryArchive::restore_pairs(const PairList& list, const std::vecto
   return found;
 }
 
-void HistoryArchive::restore_walls(WallList& list, const std::vector<std::int64_t>& id) {
+void HistoryArchive::restore_indexed_walls(WallList& list) {
   list.history.assign(list.size(), ContactHistory{});
   if (walls.empty()) return;
   // Each record to its particle's current index, then to that particle's candidate of the same
   // wall (a particle has at most kMaxWallCandidates): linear in the records.
-  index_of_.index(id);
   const std::size_t n = list.first.size() - 1;
   for (const WallRecord& r : walls) {
     const std::uint32_t i = index_of_(r.particle);

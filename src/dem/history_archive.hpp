@@ -27,6 +27,9 @@ class HistoryArchive {
   std::size_t restore_pairs(const PairList& pairs, const std::vector<std::int64_t>& id, ContactSlots& slot,
                             PairHistories& contacts);
   void restore_walls(WallList& walls, const std::vector<std::int64_t>& id);
+  // Both at a list rebuild, the ids indexed once for the two. Returns restore_pairs' count.
+  std::size_t restore(const PairList& pairs, WallList& walls, const std::vector<std::int64_t>& id,
+                      ContactSlots& slot, PairHistories& contacts);
 
   struct PairRecord {
     std::int64_t low, high;   // ids, low < high; the history is expressed for `low` as body i
@@ -40,6 +43,7 @@ class HistoryArchive {
   std::vector<PairRecord> pairs;
   std::vector<WallRecord> walls;
 
+ private:
   // The current index of each particle id: a table when the ids are dense (the usual 1..N, any
   // order), else a search in the ids sorted. Its arrays are reused by the next index().
   class IndexOfId {
@@ -54,7 +58,10 @@ class HistoryArchive {
     std::vector<std::pair<std::int64_t, std::uint32_t>> sorted_;
   };
 
- private:
+  // With index_of_ indexed for `id`.
+  std::size_t restore_indexed_pairs(const PairList& pairs, ContactSlots& slot, PairHistories& contacts);
+  void restore_indexed_walls(WallList& walls);
+
   // restore_pairs' work arrays (history_archive.cpp), kept between calls.
   struct Placed {
     std::uint32_t partner;

@@ -417,9 +417,8 @@ void Simulation::rebuild_lists() {
   if (!state_.bodies.empty()) exclude_pairs_within_bodies(state_.lists.pairs, state_.bodies.body_of_particle);
   if (state_.ghosts > 0) keep_pairs_computed_here(state_.lists.pairs, owned_count(), p.id);
   size_contact_arrays();
-  archive.restore_pairs(state_.lists.pairs, p.id, state_.lists.pair_contact, state_.lists.contacts);
   build_wall_candidates(p, owned_count(), state_.walls, skin_, state_.lists.walls);
-  archive.restore_walls(state_.lists.walls, p.id);
+  archive.restore(state_.lists.pairs, state_.lists.walls, p.id, state_.lists.pair_contact, state_.lists.contacts);
 
   find_particles_near_walls();
   find_partner_reach();

@@ -14,6 +14,8 @@
 #include <sys/wait.h>
 
 #include <cstdlib>
+#include <cstring>
+#include <stdexcept>
 #include <filesystem>
 #include <fstream>
 #include <iterator>
@@ -215,13 +217,28 @@ class BadInputTable : public ::testing::TestWithParam<BadInput> {
 
   static void SetUpTestSuite() {
     root_ = scratch_.emplace("trapdem-bad-input").path();
-    fs::create_directories(root_ / "empty");
-    places_["{TINY}"] = (fs::path(TRAPDEM_SOURCE_DIR) / "presets" / "tiny.toml").string();
-    places_["{EMPTY}"] = (root_ / "empty").string();
-    places_["{NOWHERE}"] = (root_ / "nowhere").string();
+    places_.clear();
+  }
+
+  // The file or folder a placeholder stands for, made the first time a row names it: ctest runs
+  // each row as a process of its own, and most rows need none of the costly ones ({RUN} is a tiny
+  // run of 300 steps, {IMG1} a `trapdem synth`).
+  static const std::string& place(const std::string& name) {
+    auto found = places_.find(name);
+    if (found != places_.end()) return found->second;
+    return places_[name] = make_place(name);
+  }
+
+  static std::string make_place(const std::string& name) {
+    if (name == "{TINY}") return (fs::path(TRAPDEM_SOURCE_DIR) / "presets" / "tiny.toml").string();
+    if (name == "{EMPTY}") {
+      fs::create_directories(root_ / "empty");
+      return (root_ / "empty").string();
+    }
+    if (name == "{NOWHERE}") return (root_ / "nowhere").string();
     // A small bed as two LAMMPS dumps: 20 x 10 spheres of 4 mm near the front window, the second
     // settled up to 1 mm above the trapdoor.
-    auto dump = [&](const std::string& name, double settlement, bool nan) {
+    auto dump = [&](const std::string& file, double settlement, bool nan) {
       std::ostringstream atoms;
       int id = 0;
       for (int ix = 0; ix < 20; ++ix)
@@ -232,43 +249,49 @@ class BadInputTable : public ::testing::TestWithParam<BadInput> {
           if (nan && id == 7) atoms << id << " nan 0.012 " << z << " 0.002\n";
           else atoms << id << ' ' << x << " 0.012 " << z + dz << " 0.002\n";
         }
-      const fs::path path = root_ / name;
+      const fs::path path = root_ / file;
       std::ofstream(path) << "ITEM: TIMESTEP\n0\nITEM: NUMBER OF ATOMS\n200\nITEM: BOX BOUNDS ff ff ff\n0 0.08\n0 0.014\n"
                              "0 0.045\nITEM: ATOMS id x y z radius\n"
                           << atoms.str();
       return path.string();
     };
-    places_["{DUMP0}"] = dump("d0.dump", 0.0, false);
-    places_["{DUMP1}"] = dump("d1.dump", 0.001, false);
-    places_["{DUMPNAN}"] = dump("dnan.dump", 0.001, true);
-    std::ofstream(root_ / "geom.toml") << "[box]\nwidth = 0.08\ndepth = 0.014\nheight = 0.045\n[trapdoor]\nwidth = 0.016\n"
-                                          "travel = 0.004\n";
-    places_["{GEOM}"] = (root_ / "geom.toml").string();
-    // The {DUMP0} bed as a run's only snapshot (for render).
-    {
+    if (name == "{DUMP0}") return dump("d0.dump", 0.0, false);
+    if (name == "{DUMP1}") return dump("d1.dump", 0.001, false);
+    if (name == "{DUMPNAN}") return dump("dnan.dump", 0.001, true);
+    if (name == "{GEOM}") {
+      std::ofstream(root_ / "geom.toml") << "[box]\nwidth = 0.08\ndepth = 0.014\nheight = 0.045\n[trapdoor]\nwidth = 0.016\n"
+                                            "travel = 0.004\n";
+      return (root_ / "geom.toml").string();
+    }
+    if (name == "{SNAPRUN}") {  // the {DUMP0} bed as a run's only snapshot (for render)
       Particles bed;
       for (int ix = 0; ix < 20; ++ix)
         for (int iz = 0; iz < 10; ++iz) bed.add(ix * 10 + iz + 1, {0.002 + 0.004 * ix, 0.012, 0.002 + 0.004 * iz}, 0.002, 2500.0);
       fs::create_directories(root_ / "snaprun");
       append_snapshot(root_ / "snaprun" / "snapshots.h5", make_snapshot(bed, 0.0, "pour", 0.0, 0));
-      places_["{SNAPRUN}"] = (root_ / "snaprun").string();
+      return (root_ / "snaprun").string();
     }
-    // A run stopped after 300 steps (of the pour): what a resume needs.
-    FolderRunOptions run;
-    run.config_file = places_["{TINY}"];
-    run.out_dir = root_ / "run";
-    run.quiet = true;
-    run.threads = 1;
-    run.stop_at_step = 300;
-    run_in_folder(run);
-    places_["{RUN}"] = run.out_dir.string();
-    // Two speckle images.
-    const std::string synth = fmt::format("'{}' synth --out '{}' --size 64x64 > /dev/null", TRAPDEM_EXECUTABLE,
-                                          (root_ / "img").string());
-    if (std::system(synth.c_str()) != 0) throw std::runtime_error("synth failed: " + synth);
-    places_["{IMG1}"] = (root_ / "img" / "image_001.png").string();
-    places_["{IMG2}"] = (root_ / "img" / "image_002.png").string();
+    if (name == "{RUN}") {  // a run stopped after 300 steps (of the pour): what a resume needs
+      FolderRunOptions run;
+      run.config_file = place("{TINY}");
+      run.out_dir = root_ / "run";
+      run.quiet = true;
+      run.threads = 1;
+      run.stop_at_step = 300;
+      run_in_folder(run);
+      return run.out_dir.string();
+    }
+    if (name == "{IMG1}" || name == "{IMG2}") {  // two speckle images
+      if (!fs::exists(root_ / "img" / "image_001.png")) {
+        const std::string synth = fmt::format("'{}' synth --out '{}' --size 64x64 > /dev/null", TRAPDEM_EXECUTABLE,
+                                              (root_ / "img").string());
+        if (std::system(synth.c_str()) != 0) throw std::runtime_error("synth failed: " + synth);
+      }
+      return (root_ / "img" / (name == "{IMG1}" ? "image_001.png" : "image_002.png")).string();
+    }
+    throw std::logic_error("the bad-input table names an unknown placeholder " + name);
   }
+
   static void TearDownTestSuite() { scratch_.reset(); }
 };
 
@@ -286,13 +309,20 @@ TEST_P(BadInputTable, ExitCodeAndMessage) {
   const BadInput& row = GetParam();
   const fs::path dir = root_ / "rows" / row.name;
   fs::create_directories(dir);
-  std::map<std::string, std::string> places = places_;
-  places["{IN}"] = (dir / "in.txt").string();
   if (row.input) std::ofstream(dir / "in.txt") << (std::string(row.input) == "DEEP" ? deep_toml() : row.input);
-  std::string args = row.args;
-  for (const auto& [name, value] : places)
-    for (std::size_t at = args.find(name); at != std::string::npos; at = args.find(name, at + value.size()))
-      args.replace(at, name.size(), value);
+  // Each {NAME} in the arguments replaced by its place ({IN}: the row's input file).
+  std::string args;
+  for (std::size_t from = 0; from < std::strlen(row.args);) {
+    const std::string rest = row.args + from;
+    const std::size_t open = rest.find('{'), close = rest.find('}', open);
+    if (open == std::string::npos || close == std::string::npos) {
+      args += rest;
+      break;
+    }
+    const std::string name = rest.substr(open, close - open + 1);
+    args += rest.substr(0, open) + (name == "{IN}" ? (dir / "in.txt").string() : place(name));
+    from += close + 1;
+  }
   // Every row fails within a second; a row that hangs (inf passed on as a stage length once did)
   // is stopped after 60 s and fails with exit code 124.
   const std::string command =

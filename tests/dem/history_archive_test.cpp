@@ -138,3 +138,52 @@ TEST(HistoryArchive, RestoresEveryHistoryOnItsPairAfterShuffleAndRemoval) {
   round_trip(dense, true, StoredFrom::per_listed_pair, "ids 1..700, from the per-listed-pair form");
   round_trip(reversed, true, StoredFrom::per_listed_pair, "ids 700..1, from the per-listed-pair form");
 }
+
+// The wall histories, through restore() (the rebuild's one call for pairs and walls, the ids
+// indexed once): each lands on its particle's candidate of the same wall after the particles were
+// shuffled and some removed; a candidate without a stored history starts untouched.
+TEST(HistoryArchive, RestoresWallHistoriesOnTheirParticleAndWall) {
+  const std::vector<std::int64_t> ids = {40, 7, 13, 2, 99, 61};  // sparse, not in order
+  // Particle i has candidates of walls 0..(i % 3), each touching with a history naming (id, wall).
+  auto wall_history = [](std::int64_t id, std::uint32_t wall) {
+    ContactHistory h;
+    h.tangential_spring = Vec3{double(id), double(wall), -1.0};
+    h.flags = ContactHistory::kTouching;
+    return h;
+  };
+  auto candidates_of = [](const std::vector<std::int64_t>& order) {
+    WallList list;
+    list.first.push_back(0);
+    for (std::size_t i = 0; i < order.size(); ++i) {
+      for (std::uint32_t w = 0; w <= std::uint32_t(order[i] % 3); ++w) list.wall.push_back(w);
+      list.first.push_back(std::uint32_t(list.wall.size()));
+    }
+    return list;
+  };
+  WallList before = candidates_of(ids);
+  before.history.resize(before.size());
+  for (std::size_t i = 0; i < ids.size(); ++i)
+    for (std::uint32_t k = before.first[i]; k < before.first[i + 1]; ++k)
+      if (before.wall[k] != 1) before.history[k] = wall_history(ids[i], before.wall[k]);  // wall 1: not touching
+  HistoryArchive archive;
+  archive.store_walls(before, ids);
+  EXPECT_EQ(archive.walls.size(), 7u);  // (id % 3 + 1) candidates each: 2+2+2+3+1+2 = 12, less the 5 of wall 1
+
+  const std::vector<std::int64_t> after_ids = {61, 2, 40, 13, 8};  // shuffled, 7 and 99 gone, 8 new
+  WallList after = candidates_of(after_ids);
+  PairList no_pairs;
+  no_pairs.first.assign(after_ids.size() + 1, 0);
+  ContactSlots slot;
+  PairHistories contacts(false);
+  EXPECT_EQ(archive.restore(no_pairs, after, after_ids, slot, contacts), 0u);
+  ASSERT_EQ(after.history.size(), after.size());
+  for (std::size_t i = 0; i < after_ids.size(); ++i) {
+    for (std::uint32_t k = after.first[i]; k < after.first[i + 1]; ++k) {
+      const bool stored = after.wall[k] != 1 && after_ids[i] != 8;
+      const ContactHistory want = stored ? wall_history(after_ids[i], after.wall[k]) : ContactHistory{};
+      EXPECT_EQ(after.history[k].tangential_spring.x, want.tangential_spring.x) << "id " << after_ids[i] << " wall " << after.wall[k];
+      EXPECT_EQ(after.history[k].tangential_spring.y, want.tangential_spring.y) << "id " << after_ids[i] << " wall " << after.wall[k];
+      EXPECT_EQ(after.history[k].flags, want.flags) << "id " << after_ids[i] << " wall " << after.wall[k];
+    }
+  }
+}

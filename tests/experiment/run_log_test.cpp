@@ -68,7 +68,9 @@ TEST(RunLog, AConstantTorqueRunNotesItsStepOverTheDiameter) {
     EXPECT_FALSE(run_in_folder(o));
     const std::string log = read_all(dir / "run" / "run.log");
     EXPECT_EQ(log.find(note) != std::string::npos, expected) << log;
-    if (expected) EXPECT_NE(log.find("step / mean diameter = "), std::string::npos) << log;
+    if (expected) {
+      EXPECT_NE(log.find("step / mean diameter = "), std::string::npos) << log;
+    }
   }
 }
 
