@@ -11,6 +11,7 @@
 #include <unistd.h>
 
 #include <chrono>
+#include <cstdlib>
 #include <cmath>
 #include <sstream>
 #include <filesystem>
@@ -78,19 +79,56 @@ std::string numbers_without_cost(const Json& summary) {
   return copy.dump();
 }
 
-// One study that ran straight through, shared by the tests (a few seconds of running).
+// The study that runs straight through into `dir`/out, its file `dir`/study.toml.
+void run_the_straight_study(const fs::path& dir) {
+  const app::StudyOptions o = one_thread_study(write_study_file(dir), dir / "out");
+  ASSERT_EQ(app::run_study(o), 0);
+}
+
+// One study that ran straight through, shared by the tests, which only read it (a test that writes
+// works in a copy). ctest makes it once for all of them (tests/CMakeLists.txt: the fixture
+// study.straight_run runs StudyRunFixture below with TRAPDEM_STUDY_RUN naming the folder, which
+// ctest gives each test); without that variable (the program run by hand) the suite makes its own.
 class StudyRun : public ::testing::Test {
  protected:
   static void SetUpTestSuite() {
+    if (const char* shared = std::getenv("TRAPDEM_STUDY_RUN"); shared != nullptr && *shared != '\0') {
+      root_ = shared;
+      ASSERT_TRUE(fs::exists(out() / "report" / "summary.json"))
+          << "TRAPDEM_STUDY_RUN=" << shared << " holds no finished study (the fixture study.straight_run makes it)";
+      return;
+    }
     dir_.emplace("trapdem-study-straight");
-    const app::StudyOptions o = one_thread_study(write_study_file(dir_->path()), *dir_ / "out");
-    ASSERT_EQ(app::run_study(o), 0);
+    root_ = dir_->path();
+    run_the_straight_study(root_);
   }
   static void TearDownTestSuite() { dir_.reset(); }
-  static fs::path out() { return *dir_ / "out"; }
+  static fs::path out() { return root_ / "out"; }
+  // A copy of the study's folder (its file and its output) in `dir`: for a test that writes.
+  static fs::path copy_into(const fs::path& dir) {
+    fs::copy(root_, dir, fs::copy_options::recursive | fs::copy_options::overwrite_existing);
+    return dir / "out";
+  }
   static std::optional<ScratchDir> dir_;
+  static fs::path root_;
 };
 std::optional<ScratchDir> StudyRun::dir_;
+fs::path StudyRun::root_;
+
+// What the fixture study.straight_run runs (not discovered as a test of its own: tests/CMakeLists.txt
+// leaves out suites named *Fixture): the shared study, made afresh in TRAPDEM_STUDY_RUN; the program
+// run by hand without that variable makes it in a scratch folder (as SetUpTestSuite would).
+TEST(StudyRunFixture, MakesTheSharedStudy) {
+  const char* shared = std::getenv("TRAPDEM_STUDY_RUN");
+  if (shared == nullptr || *shared == '\0') {
+    const ScratchDir scratch("trapdem-study-straight");
+    run_the_straight_study(scratch.path());
+    return;
+  }
+  fs::remove_all(shared);
+  fs::create_directories(shared);
+  run_the_straight_study(shared);
+}
 
 struct BrowserResult {
   int exit_code = -1;
@@ -217,7 +255,8 @@ TEST_F(StudyRun, StudyJsonNamesTheStudyFileRelativeToTheFolder) {
 
 TEST_F(StudyRun, PageOpensInHeadlessChromiumWithoutMissingImagesOrConsoleErrors) {
   ASSERT_TRUE(chromium_installed()) << "chromium (Debian package) is needed: scripts/install-deps installs it";
-  const fs::path page = out() / "report" / "index.html";
+  const ScratchDir scratch("trapdem-study-page");  // the checks write pages beside the report's
+  const fs::path page = copy_into(scratch.path()) / "report" / "index.html";
   const BrowserResult ok = open_in_chromium(page);
   EXPECT_EQ(ok.exit_code, 0);
   EXPECT_EQ(ok.images, 4);  // the strain panel, two contour maps, the ground reaction curves
@@ -225,7 +264,7 @@ TEST_F(StudyRun, PageOpensInHeadlessChromiumWithoutMissingImagesOrConsoleErrors)
   EXPECT_TRUE(ok.console.empty()) << ok.console.front();
 
   // The check itself can fail: a page pointing at a missing image, and one writing to the console.
-  const fs::path broken = out() / "report" / "broken.html";
+  const fs::path broken = page.parent_path() / "broken.html";
   std::string html = read_text_file(page);
   html.replace(html.find("ground_reaction.png\" alt"), std::string("ground_reaction.png").size(), "no_such_figure.png");
   std::ofstream(broken) << html;
@@ -283,9 +322,10 @@ TEST_F(StudyRun, ReportFiguresInSvgAndPdf) {
     EXPECT_EQ(shown.images, 4);
     EXPECT_EQ(shown.broken_images, "") << format;
   }
+  const ScratchDir scratch("trapdem-study-format-eps");
   app::StudyOptions eps;
-  eps.file = (StudyRun::out().parent_path() / "study.toml").string();
-  eps.out = out().string();
+  eps.out = copy_into(scratch.path()).string();
+  eps.file = (scratch.path() / "study.toml").string();
   eps.report_only = true;
   eps.format = "eps";
   EXPECT_THROW(app::run_study(eps), InputError);
@@ -339,7 +379,8 @@ TEST_F(StudyRun, ACaseWhoseConfigurationChangedIsRefused) {
   text.replace(text.find("kinetic_friction = 0.6"), 22, "kinetic_friction = 0.7");
   const ScratchDir scratch("trapdem-study-changed");
   const fs::path& dir = scratch.path();
-  const app::StudyOptions o = one_thread_study(write_study_file(dir, text), out());
+  const fs::path out = copy_into(dir);
+  const app::StudyOptions o = one_thread_study(write_study_file(dir, text), out);
   try {
     app::run_study(o);
     FAIL() << "expected an error";
@@ -417,8 +458,8 @@ TEST_F(StudyRun, AnotherScaleInTheSameFolderIsRefused) {
   const ScratchDir scratch("trapdem-study-scale");
   const fs::path& dir = scratch.path();
   app::StudyOptions o;
+  o.out = copy_into(dir).string();
   o.file = write_study_file(dir, text).string();
-  o.out = out().string();
   o.quiet = true;
   try {
     app::run_study(o);
