@@ -105,11 +105,6 @@ std::size_t HistoryArchive::restore_pairs(const PairList& list, const std::vecto
   return restore_indexed_pairs(list, slot, contacts);
 }
 
-void HistoryArchive::restore_walls(WallList& list, const std::vector<std::int64_t>& id) {
-  index_of_.index(id);
-  restore_indexed_walls(list);
-}
-
 std::size_t HistoryArchive::restore(const PairList& pair_list, WallList& wall_list, const std::vector<std::int64_t>& id,
                                     ContactSlots& slot, PairHistories& contacts) {
   index_of_.index(id);

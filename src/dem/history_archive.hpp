@@ -26,8 +26,8 @@ class HistoryArchive {
   // would otherwise fault ~60 MB of fresh pages in).
   std::size_t restore_pairs(const PairList& pairs, const std::vector<std::int64_t>& id, ContactSlots& slot,
                             PairHistories& contacts);
-  void restore_walls(WallList& walls, const std::vector<std::int64_t>& id);
-  // Both at a list rebuild, the ids indexed once for the two. Returns restore_pairs' count.
+  // The pairs' as restore_pairs, and the walls' (each record onto its particle's candidate of the
+  // same wall), the ids indexed once for the two: a list rebuild's. Returns restore_pairs' count.
   std::size_t restore(const PairList& pairs, WallList& walls, const std::vector<std::int64_t>& id,
                       ContactSlots& slot, PairHistories& contacts);
 
