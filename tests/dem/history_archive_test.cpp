@@ -5,7 +5,9 @@
 // and packed in pair order. Exact: the values are copied, not computed. The engine's compact form
 // keeps the rolling spring only for a law that has one (PairHistories): both forms are tested, and
 // the archive from the per-listed-pair form (an MPI rank's checkpoint) too.
+#include <fmt/format.h>
 #include <gtest/gtest.h>
+#include <omp.h>
 
 #include <algorithm>
 #include <map>
@@ -129,14 +131,22 @@ TEST(HistoryArchive, RestoresEveryHistoryOnItsPairAfterShuffleAndRemoval) {
   std::vector<std::int64_t> reversed(dense.rbegin(), dense.rend());
   std::vector<std::int64_t> sparse;
   for (std::int64_t k = 0; k < 700; ++k) sparse.push_back(1000003 * ((k * 389) % 700) - 5000000);
-  for (const bool rolling : {true, false}) {
-    const std::string law = rolling ? "rolling spring kept (EPSD)" : "no rolling spring";
-    round_trip(dense, rolling, StoredFrom::compact, "ids 1..700, " + law);
-    round_trip(reversed, rolling, StoredFrom::compact, "ids 700..1 (owners change sides), " + law);
-    round_trip(sparse, rolling, StoredFrom::compact, "sparse ids, negative ones too (looked up by search, not table), " + law);
+  // The archive is written and restored by thread blocks of owners: the same result at every count.
+  const int threads_before = omp_get_max_threads();
+  for (const int threads : {1, 3, 7}) {
+    omp_set_num_threads(threads);
+    const std::string on = fmt::format(", {} threads", threads);
+    for (const bool rolling : {true, false}) {
+      const std::string law = rolling ? "rolling spring kept (EPSD)" : "no rolling spring";
+      round_trip(dense, rolling, StoredFrom::compact, "ids 1..700, " + law + on);
+      round_trip(reversed, rolling, StoredFrom::compact, "ids 700..1 (owners change sides), " + law + on);
+      round_trip(sparse, rolling, StoredFrom::compact,
+                 "sparse ids, negative ones too (looked up by search, not table), " + law + on);
+    }
+    round_trip(dense, true, StoredFrom::per_listed_pair, "ids 1..700, from the per-listed-pair form" + on);
+    round_trip(reversed, true, StoredFrom::per_listed_pair, "ids 700..1, from the per-listed-pair form" + on);
   }
-  round_trip(dense, true, StoredFrom::per_listed_pair, "ids 1..700, from the per-listed-pair form");
-  round_trip(reversed, true, StoredFrom::per_listed_pair, "ids 700..1, from the per-listed-pair form");
+  omp_set_num_threads(threads_before);
 }
 
 // The wall histories, through restore() (the rebuild's one call for pairs and walls, the ids
