@@ -131,7 +131,7 @@ TEST(HistoryArchive, RestoresEveryHistoryOnItsPairAfterShuffleAndRemoval) {
   std::vector<std::int64_t> reversed(dense.rbegin(), dense.rend());
   std::vector<std::int64_t> sparse;
   for (std::int64_t k = 0; k < 700; ++k) sparse.push_back(1000003 * ((k * 389) % 700) - 5000000);
-  // The archive is written and restored by thread blocks of owners: the same result at every count.
+  // The archive is written by thread blocks of owners: the same records at every count.
   const int threads_before = omp_get_max_threads();
   for (const int threads : {1, 3, 7}) {
     omp_set_num_threads(threads);
