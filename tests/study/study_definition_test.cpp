@@ -262,6 +262,30 @@ TEST(StudyDefinition, TheEqualDensityPaperStudyIsPaperFastFromTheCalibratedDepos
   (void)ExperimentConfig::from(rf1_epsd);  // throws on any invalid key or value
 }
 
+// The paper-box replicates (issue 36): Calibrated and RF3 resolved exactly as paper-table2's
+// paper-fast cases, key for key, but for the pour seeds 2 and 3 (seed 1 is paper-table2's run).
+TEST(StudyDefinition, ThePaperReplicatesArePaperTable2sPaperFastCasesWithSeedsTwoAndThree) {
+  const fs::path studies = fs::path(TRAPDEM_SOURCE_DIR) / "studies";
+  const StudyDefinition replicates = load_study(studies / "paper-replicates.toml");
+  const StudyDefinition table2 = load_study(studies / "paper-table2.toml");
+  const StudyScale& scale = replicates.scale("paper-fast");
+  const StudyScale& fast = table2.scale("paper-fast");
+  EXPECT_EQ(scale.replicates.seeds, (std::vector<std::uint64_t>{2, 3}));
+  EXPECT_FALSE(fast.replicates.asked());
+  ASSERT_EQ(replicates.cases.size(), 2u);
+  for (const StudyCase& c : replicates.cases) {
+    EXPECT_FALSE(c.replicates.asked()) << c.name;
+    const auto twin = std::find_if(table2.cases.begin(), table2.cases.end(), [&](const StudyCase& k) { return k.name == c.name; });
+    ASSERT_NE(twin, table2.cases.end()) << c.name;
+    // The whole resolved configuration, as `trapdem run` would write it to resolved.toml.
+    const std::string ours = resolved_case_configuration(c, scale, app::preset_directory());
+    const std::string theirs = resolved_case_configuration(*twin, fast, app::preset_directory());
+    EXPECT_EQ(ours, theirs) << c.name;
+    Config config = Config::parse(ours, c.name);
+    (void)ExperimentConfig::from(config);  // throws on any invalid key or value
+  }
+}
+
 // The shape study (issue 39): three materials at one scale, each a valid run configuration; the
 // beads and the rolling case are paper-table2's Calibrated and RF3 at the demo scale, the dimers
 // the same box and law but for their shape, mu 0.5 and no rolling resistance.
