@@ -226,40 +226,47 @@ TEST(StudyDefinition, TheSeedLawStudyIsThePaperStudyWithBlazeDemsLaw) {
 }
 
 // The paper-box equal-density study (issue 36): each case is paper-table2's paper-fast case but for
-// its start (the paper-fast Calibrated deposit, which a fresh clone does not hold, so the scale is
-// resolved here without its [packing]) and, for rf1-epsd, the rolling model.
-TEST(StudyDefinition, TheEqualDensityPaperStudyIsPaperFastFromTheCalibratedDeposit) {
+// its start (a paper-fast Calibrated deposit, which a fresh clone does not hold, so the scale is
+// resolved here without its [packing]) and, for rf1-epsd, the rolling model. Two scales, two
+// deposits: pour seed 1's (paper-table2.toml) and pour seed 2's (paper-replicates.toml).
+TEST(StudyDefinition, TheEqualDensityPaperStudyIsPaperFastFromTheCalibratedDeposits) {
   const fs::path studies = fs::path(TRAPDEM_SOURCE_DIR) / "studies";
   const StudyDefinition equal = load_study(studies / "equal-density-paper.toml");
   const StudyDefinition table2 = load_study(studies / "paper-table2.toml");
-  StudyScale scale = equal.scale("paper-fast");
-  std::vector<std::string>& set = scale.base.overrides;
-  // The deposit's folder, made absolute beside the study file's folder.
-  EXPECT_EQ(std::count_if(set.begin(), set.end(), [](const std::string& o) {
-              return o.starts_with("packing.from=") && o.ends_with("trapdem-out/paper-table2-paper-fast/cases/calibrated\"");
-            }), 1)
-      << fmt::format("{}", fmt::join(set, " "));
-  for (const char* o : {"packing.snapshot=1", "packing.start_stage=\"settling\""})
-    EXPECT_NE(std::find(set.begin(), set.end(), std::string(o)), set.end()) << o;
-  std::erase_if(set, [](const std::string& o) { return o.starts_with("packing."); });
-  auto resolved = [](const StudyDefinition& s, const std::string& name, const StudyScale& at) {
-    const auto c = std::find_if(s.cases.begin(), s.cases.end(), [&](const StudyCase& k) { return k.name == name; });
-    if (c == s.cases.end()) throw std::runtime_error(s.name + " has no case " + name);  // fails the test
-    return Config::parse(resolved_case_configuration(*c, at, app::preset_directory()), name);
-  };
-  const StudyScale& fast = table2.scale("paper-fast");
-  Config rf3 = resolved(equal, "rf3", scale), rf3_table2 = resolved(table2, "rf3", fast);
-  Config rf1_epsd = resolved(equal, "rf1-epsd", scale), rf1_table2 = resolved(table2, "rf1", fast);
-  for (const char* key : {"contact.normal_stiffness", "contact.tangential_stiffness", "contact.static_friction",
-                          "contact.kinetic_friction", "contact.rolling_friction", "contact.restitution",
-                          "contact.lever_arm", "numerics.time_step_fraction", "trapdoor.rate", "trapdoor.travel",
-                          "spin_up.g_level", "box.depth_boundary"}) {
-    EXPECT_EQ(rf3.require_value_text(key), rf3_table2.require_value_text(key)) << key;
-    EXPECT_EQ(rf1_epsd.require_value_text(key), rf1_table2.require_value_text(key)) << key;
+  ASSERT_EQ(equal.scales.size(), 2u);
+  for (const auto& [scale_name, deposit] :
+       {std::pair<std::string, std::string>{"paper-fast", "trapdem-out/paper-table2-paper-fast/cases/calibrated\""},
+        {"paper-fast-seed2", "trapdem-out/paper-replicates-paper-fast/cases/calibrated/seed-2\""}}) {
+    SCOPED_TRACE(scale_name);
+    StudyScale scale = equal.scale(scale_name);
+    std::vector<std::string>& set = scale.base.overrides;
+    // The deposit's folder, made absolute beside the study file's folder.
+    EXPECT_EQ(std::count_if(set.begin(), set.end(), [&](const std::string& o) {
+                return o.starts_with("packing.from=") && o.ends_with(deposit);
+              }), 1)
+        << fmt::format("{}", fmt::join(set, " "));
+    for (const char* o : {"packing.snapshot=1", "packing.start_stage=\"settling\""})
+      EXPECT_NE(std::find(set.begin(), set.end(), std::string(o)), set.end()) << o;
+    std::erase_if(set, [](const std::string& o) { return o.starts_with("packing."); });
+    auto resolved = [](const StudyDefinition& s, const std::string& name, const StudyScale& at) {
+      const auto c = std::find_if(s.cases.begin(), s.cases.end(), [&](const StudyCase& k) { return k.name == name; });
+      if (c == s.cases.end()) throw std::runtime_error(s.name + " has no case " + name);  // fails the test
+      return Config::parse(resolved_case_configuration(*c, at, app::preset_directory()), name);
+    };
+    const StudyScale& fast = table2.scale("paper-fast");
+    Config rf3 = resolved(equal, "rf3", scale), rf3_table2 = resolved(table2, "rf3", fast);
+    Config rf1_epsd = resolved(equal, "rf1-epsd", scale), rf1_table2 = resolved(table2, "rf1", fast);
+    for (const char* key : {"contact.normal_stiffness", "contact.tangential_stiffness", "contact.static_friction",
+                            "contact.kinetic_friction", "contact.rolling_friction", "contact.restitution",
+                            "contact.lever_arm", "numerics.time_step_fraction", "trapdoor.rate", "trapdoor.travel",
+                            "spin_up.g_level", "box.depth_boundary"}) {
+      EXPECT_EQ(rf3.require_value_text(key), rf3_table2.require_value_text(key)) << key;
+      EXPECT_EQ(rf1_epsd.require_value_text(key), rf1_table2.require_value_text(key)) << key;
+    }
+    EXPECT_EQ(rf3.require_value_text("contact.rolling_model"), rf3_table2.require_value_text("contact.rolling_model"));
+    EXPECT_EQ(rf1_epsd.require_value_text("contact.rolling_model"), "\"elastic_plastic\"");
+    (void)ExperimentConfig::from(rf1_epsd);  // throws on any invalid key or value
   }
-  EXPECT_EQ(rf3.require_value_text("contact.rolling_model"), rf3_table2.require_value_text("contact.rolling_model"));
-  EXPECT_EQ(rf1_epsd.require_value_text("contact.rolling_model"), "\"elastic_plastic\"");
-  (void)ExperimentConfig::from(rf1_epsd);  // throws on any invalid key or value
 }
 
 // The paper-box replicates (issue 36): Calibrated and RF3 resolved exactly as paper-table2's
