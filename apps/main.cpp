@@ -248,6 +248,10 @@ int main(int argc, char** argv) {
   study_cmd->add_flag("--report-only", study.report_only, "Run nothing: report on the finished cases");
   study_cmd->add_flag("--collect", study.collect, "No trapdoor run: the element tests still missing, then the report (a Slurm submission's report job)");
   study_cmd->add_flag("--status", study.status, "Run nothing: where each run stands (not started, running, finished, failed)");
+  study_cmd->add_option("--stop-after", study.stop_after_seconds,
+                        "Stop with the running case's checkpoint after this many seconds of wall clock, counted "
+                        "from the first run's start; no run starts after it (the same command carries on)")
+      ->check(CLI::PositiveNumber);
   study_cmd->add_option("--format", study.format, "Figure format of the report and the runs' analyses: png (default), svg or pdf")->check(CLI::IsMember({"png", "svg", "pdf"}, CLI::ignore_case));
   add_submit_options(*study_cmd, study.submit);
 

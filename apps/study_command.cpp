@@ -44,6 +44,12 @@ int run_study(const StudyOptions& o) {
   const fs::path out = o.out.empty() ? fs::path("trapdem-out") / (study.name + "-" + scale.name) : fs::path(o.out);
   const int modes = int(o.report_only) + int(o.collect) + int(o.status) + int(!o.submit.submit.empty());
   if (modes > 1) throw InputError("give one of --report-only, --collect, --status and --submit");
+  if (modes > 0 && o.stop_after_seconds > 0.0)
+    throw InputError("--stop-after: a budget for the runs here, not for --report-only, --collect, --status or "
+                     "--submit (a Slurm task's limit is --time)");
+  if (o.stop_after_seconds < 0.0)  // the command line's check refuses it; a caller of the library may not
+    throw InputError(fmt::format("--stop-after: {:g} s: expected a positive number of seconds (0: no budget)",
+                                 o.stop_after_seconds));
   const plot::FigureFormat format = plot::parse_figure_format(o.format, "--format");
   const std::vector<std::string> where = {"--out", fs::absolute(out).lexically_normal().string(), "--scale", scale.name};
   std::vector<std::string> status_command = {"trapdem", "study", fs::absolute(o.file).lexically_normal().string()};
@@ -91,8 +97,10 @@ int run_study(const StudyOptions& o) {
           log_study_line(out, fmt::format("collect: {} has not finished ({}); the report leaves it out", r.title,
                                           to_string(r.state)), false);
     }
-  } else if (!run_study_in_folder(study, scale, out, StudyRunSettings{preset_directory(), o.threads, o.quiet, {}})) {
-    return kExitInterrupted;
+  } else {
+    StudyRunSettings settings{preset_directory(), o.threads, o.quiet, {}};
+    settings.stop_after_seconds = o.stop_after_seconds;
+    if (!run_study_in_folder(study, scale, out, settings)) return kExitInterrupted;
   }
   const fs::path page = write_study_outputs(study, scale, out, o.quiet, preset_directory(), format);
   log_study_line(out, fmt::format("report: {}", page.string()), o.quiet);

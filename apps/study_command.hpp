@@ -26,6 +26,7 @@ struct StudyOptions {
   bool collect = false;       // no trapdoor run: the element tests still missing, then the report (Slurm's report job)
   bool status = false;        // no running: where each run stands
   std::string format = "png"; // the report's and the runs' analysis figures: png | svg | pdf
+  double stop_after_seconds = 0.0;  // > 0: the study's wall-clock budget (StudyRunSettings)
   SubmitOptions submit;
 };
 

@@ -275,7 +275,7 @@ int synth(const std::string& field, const std::string& out, int width, int heigh
 
 // A study (docs/study.md) run, resumed or reported into `out`, as `trapdem study`.
 py::dict study(const std::string& file, const std::string& scale_name, const std::string& out_dir,
-               const std::string& presets, int threads, bool quiet, bool report_only) {
+               const std::string& presets, int threads, bool quiet, bool report_only, double stop_after_seconds) {
   const StudyDefinition definition = load_study(file);
   const StudyScale& scale = definition.scale(scale_name.empty() ? definition.default_scale : scale_name);
   const fs::path out = out_dir.empty() ? fs::path("trapdem-out") / (definition.name + "-" + scale.name) : fs::path(out_dir);
@@ -287,7 +287,8 @@ py::dict study(const std::string& file, const std::string& scale_name, const std
     if (report_only) {
       if (!holds_study(out)) throw InputError(fmt::format("report only: {} holds no study", out.string()));
       claim_study_folder(definition, scale, out);
-    } else if (!run_study_in_folder(definition, scale, out, StudyRunSettings{presets, threads, quiet, terminal})) {
+    } else if (StudyRunSettings settings{presets, threads, quiet, terminal, stop_after_seconds};
+               !run_study_in_folder(definition, scale, out, settings)) {
       py::gil_scoped_acquire acquire;
       d["finished"] = false;
       return d;
@@ -317,7 +318,7 @@ PYBIND11_MODULE(_trapdem, m) {
   m.def("piv", &piv, py::arg("images"), py::arg("out"), py::arg("subset"), py::arg("step"), py::arg("threads"),
         py::arg("scale"), py::arg("origin"), py::arg("figures"));
   m.def("study", &study, py::arg("file"), py::arg("scale"), py::arg("out"), py::arg("presets"), py::arg("threads"),
-        py::arg("quiet"), py::arg("report_only"));
+        py::arg("quiet"), py::arg("report_only"), py::arg("stop_after_seconds"));
   m.def("synth", &synth, py::arg("field"), py::arg("out"), py::arg("width"), py::arg("height"), py::arg("images"),
         py::arg("noise"), py::arg("magnitude"), py::arg("seed"));
 }

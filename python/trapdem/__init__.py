@@ -274,18 +274,27 @@ def element(config=None, *, preset: str | None = None, out=None, overrides: Iter
     return _trapdem.element(file, list(overrides), str(out or ""), threads)
 
 
-def study(file, *, scale: str = "", out=None, threads: int = 0, quiet: bool = False, report_only: bool = False) -> dict:
+def study(file, *, scale: str = "", out=None, threads: int = 0, quiet: bool = False, report_only: bool = False,
+          stop_after: float = 0.0) -> dict:
     """A study (docs/study.md) run, resumed (its finished runs skipped) and reported into `out`
     (default trapdem-out/<study>-<scale>), as ``trapdem study``: returns the folder, the report's
-    page and its summary (summary.json as a dict). Its lines and its runs' progress go to sys.stdout
-    unless `quiet` (then to study.log and each run.log only). Ctrl-C stops it with its running case's
-    checkpoint and raises KeyboardInterrupt; calling it again carries on."""
-    r = _trapdem.study(str(file), scale, str(out or ""), str(_preset_directory()), threads, quiet, report_only)
+    page and its summary (summary.json as a dict), and `finished` True. Its lines and its runs'
+    progress go to sys.stdout unless `quiet` (then to study.log and each run.log only). Ctrl-C stops
+    it with its running case's checkpoint and raises KeyboardInterrupt; calling it again carries on.
+    `stop_after` (s of wall clock, from its first run's start; as ``--stop-after``) stops it the same
+    way but returns, with `finished` False and no report or summary (None)."""
+    if stop_after < 0.0 or (report_only and stop_after > 0.0):
+        raise ValueError(f"stop_after = {stop_after!r}: expected seconds > 0 for the runs (0: no budget), "
+                         "not with report_only")
+    r = _trapdem.study(str(file), scale, str(out or ""), str(_preset_directory()), threads, quiet, report_only,
+                       stop_after)
     if not r["finished"]:
+        if stop_after > 0.0:
+            return {"out": pathlib.Path(r["out"]), "report": None, "summary": None, "finished": False}
         raise KeyboardInterrupt(f"the study stopped with a checkpoint; call trapdem.study again to carry it on")
     page = pathlib.Path(r["report"])
     return {"out": pathlib.Path(r["out"]), "report": page,
-            "summary": json.loads((page.parent / "summary.json").read_text())}
+            "summary": json.loads((page.parent / "summary.json").read_text()), "finished": True}
 
 
 def piv(images: Iterable, out, *, subset: int = 32, step: int = 16, threads: int = 0, scale: float | None = None,

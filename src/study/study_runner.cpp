@@ -1,9 +1,11 @@
 #include "study/study_runner.hpp"
 
+#include <chrono>
 #include <cstdio>
 #include <ctime>
 #include <fstream>
 #include <memory>
+#include <optional>
 
 #include <fmt/format.h>
 
@@ -182,6 +184,9 @@ bool run_study_cases(const StudyDefinition& study, const StudyScale& scale, cons
   for (const auto& case_runs_of : runs) total += case_runs_of.size();
 
   std::size_t counted = 0;
+  // The budget's clock starts with the first run that starts or resumes (so that a tiny budget still
+  // runs one step and writes its checkpoint: what the same call again resumes).
+  std::optional<std::chrono::steady_clock::time_point> first_run_started;
   for (std::size_t k = 0; k < study.cases.size(); ++k) {
     const StudyCase& c = study.cases[k];
     for (const CaseRun& r : runs[k]) {
@@ -197,6 +202,18 @@ bool run_study_cases(const StudyDefinition& study, const StudyScale& scale, cons
         log_study_line(out, fmt::format("{}: finished before, skipped", counter), quiet, settings.terminal);
         continue;
       }
+      if (settings.stop_after_seconds > 0.0) {
+        const auto now = std::chrono::steady_clock::now();
+        if (!first_run_started) first_run_started = now;
+        const double left = settings.stop_after_seconds - std::chrono::duration<double>(now - *first_run_started).count();
+        if (left <= 0.0) {
+          log_study_line(out, fmt::format("{}: not started: the study's time budget of {:g} s (--stop-after) is "
+                                          "spent; run the same command again to carry on", counter, settings.stop_after_seconds),
+                         quiet, settings.terminal);
+          return false;
+        }
+        run.stop_after_seconds = left;
+      }
       if (has_checkpoint) {
         log_study_line(out, fmt::format("{}: resuming from its checkpoint", counter), quiet, settings.terminal);
         run.resume_dir = dir;
@@ -209,8 +226,9 @@ bool run_study_cases(const StudyDefinition& study, const StudyScale& scale, cons
         run.out_dir = dir;
       }
       if (!run_in_folder(run)) {
-        log_study_line(out, fmt::format("{}: interrupted (checkpoint written); run the same command again to carry on",
-                                        counter), quiet, settings.terminal);
+        log_study_line(out, fmt::format("{}: {} (checkpoint written); run the same command again to carry on", counter,
+                                        run.stop_after_seconds > 0.0 ? "stopped (a signal, or the study's time budget)" : "interrupted"),
+                       quiet, settings.terminal);
         return false;
       }
       log_study_line(out, fmt::format("{}: finished", counter), quiet, settings.terminal);

@@ -19,6 +19,10 @@ struct StudyRunSettings {
   int threads = 0;                         // OpenMP threads per run; 0: each configuration's numerics.threads
   bool quiet = false;                      // the runs' progress lines only in their run.log
   LineSink terminal;                       // where the study's and its runs' lines go (default: stdout, stderr)
+  // > 0: the study's wall-clock budget (s), counted from its first run's start: the run going when it
+  // is spent stops with its checkpoint, and no run starts after it (a shared host's working hours, a
+  // batch job's time limit); the same call again carries on.
+  double stop_after_seconds = 0.0;
 };
 
 // The case's configuration at the scale as `trapdem run` resolves it (resolved.toml's text); throws
@@ -63,8 +67,9 @@ void run_case_element_test_once(const StudyDefinition& study, const StudyCase& s
                                 const std::filesystem::path& out, const StudyRunSettings& settings);
 
 // Runs (or resumes, or skips) every case of `study` at `scale` into out/cases/<name>. Returns false
-// if a run was interrupted (SIGINT/SIGTERM: its checkpoint is written). Throws InputError if a case's
-// folder holds a run of another configuration.
+// if a run was interrupted (SIGINT/SIGTERM or the settings' stop_after_seconds: its checkpoint is
+// written) or the budget was spent before a run started. Throws InputError if a case's folder holds
+// a run of another configuration.
 bool run_study_cases(const StudyDefinition& study, const StudyScale& scale, const std::filesystem::path& out,
                      const StudyRunSettings& settings);
 

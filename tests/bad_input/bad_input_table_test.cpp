@@ -190,6 +190,9 @@ const std::vector<BadInput>& table() {
       {"StudyStrainScaleTooHigh", "study {IN} --out {EMPTY}/st",
        "[scales.s]\npreset = \"tiny\"\n[cases.a]\nlabel = \"A\"\n[report]\nmax_strain = 1e9\n", 2, "report.max_strain"},
       {"StudyThreadsText", "study {IN} --threads abc", "name = \"s\"\n", 2, "expected 0 (all cores) or a thread count up to 4096"},
+      {"StudyStopAfterNegative", "study {IN} --stop-after -5", "name = \"s\"\n", 2, "--stop-after"},
+      {"StudyStopAfterWithStatus", "study {IN} --out {EMPTY}/st --status --stop-after 60",
+       "[scales.s]\npreset = \"tiny\"\n[cases.a]\nlabel = \"A\"\n", 2, "--stop-after: a budget for the runs here"},
       // ---- calibrate
       {"CalibrateMissingVary", "calibrate {TINY} --target {EMPTY} --at 10mm", nullptr, 2, "--vary is required"},
       {"CalibrateNoTarget", "calibrate {TINY} --vary trapdoor.rate=0.1,0.2 --target {EMPTY} --at 10mm --out {EMPTY}/c", nullptr, 2, "piv.h5"},

@@ -198,7 +198,15 @@ def test_a_study_runs_and_reports(scratch):
         + "".join(f"{s.split('=')[0]} = {s.split('=', 1)[1]}\n" for s in SHORT_SET)
         + '[cases.loose]\nlabel = "Loose"\n[cases.loose.set.contact]\nkinetic_friction = 0.3\n'
         + 'static_friction = 0.3\n')
-    result = trapdem.study(definition, out=scratch / "study", threads=1)
+    # A budget of a nanosecond: the run stops with its checkpoint and the call returns unfinished.
+    stopped = trapdem.study(definition, out=scratch / "study", threads=1, stop_after=1e-9)
+    assert stopped["finished"] is False and stopped["report"] is None and stopped["summary"] is None
+    assert (scratch / "study" / "cases" / "loose" / "checkpoint.h5").is_file()
+    assert not (scratch / "study" / "report").exists()
+    with pytest.raises(ValueError, match="stop_after"):
+        trapdem.study(definition, out=scratch / "study", threads=1, stop_after=-1.0)
+    result = trapdem.study(definition, out=scratch / "study", threads=1)  # carries it on
+    assert result["finished"] is True
     assert result["report"].is_file() and result["report"].name == "index.html"
     assert (scratch / "study" / "cases" / "loose" / "trapdoor.csv").is_file()
     assert "findings" in result["summary"]

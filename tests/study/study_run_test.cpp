@@ -23,6 +23,7 @@
 
 #include "core/json.hpp"
 #include "core/errors.hpp"
+#include "core/exit_codes.hpp"
 #include "io/text_file.hpp"
 #include "study_command.hpp"
 #include "tiny_study.hpp"
@@ -372,6 +373,51 @@ TEST_F(StudyRun, KilledDuringTheSecondCaseAndStartedAgainGivesTheSameReport) {
   EXPECT_EQ(summary_of(out)["cases"][1]["cost"]["segments"].as_number(), 2.0);
   EXPECT_EQ(summary_of(out)["cases"][1]["cost"]["particle_steps"].as_number(),
             summary_of(StudyRun::out())["cases"][1]["cost"]["particle_steps"].as_number());
+}
+
+// --stop-after: a budget of a nanosecond stops the first run with its checkpoint at its first look at
+// the clock (the budget's clock starts with that run) and starts no other; the same command again,
+// with a budget no tiny run nears, resumes it, runs the second and gives the straight study's numbers.
+TEST_F(StudyRun, StopAfterStopsTheRunningCaseWithItsCheckpointAndTheSameCommandCarriesOn) {
+  const ScratchDir scratch("trapdem-study-stop-after");
+  const fs::path file = write_study_file(scratch.path()), out = scratch.path() / "out";
+  app::StudyOptions o = one_thread_study(file, out);
+  o.stop_after_seconds = 1e-9;
+  ASSERT_EQ(app::run_study(o), kExitInterrupted);
+  EXPECT_TRUE(fs::exists(out / "cases" / "smooth" / "checkpoint.h5"));
+  EXPECT_FALSE(fs::exists(out / "cases" / "rough")) << "a run started after the budget was spent";
+  EXPECT_FALSE(fs::exists(out / "report"));
+  std::string log = read_text_file(out / "study.log");
+  EXPECT_NE(log.find("[1/2] smooth: stopped (a signal, or the study's time budget) (checkpoint written)"),
+            std::string::npos) << log;
+
+  o.stop_after_seconds = 3600.0;
+  ASSERT_EQ(app::run_study(o), 0);
+  log = read_text_file(out / "study.log");
+  EXPECT_NE(log.find("[1/2] smooth: resuming from its checkpoint"), std::string::npos) << log;
+  EXPECT_NE(log.find("[2/2] rough: running"), std::string::npos) << log;
+  EXPECT_EQ(numbers_without_cost(summary_of(out)), numbers_without_cost(summary_of(StudyRun::out())));
+}
+
+// A budget is for the runs run here, and a number of seconds: refused, before anything is written,
+// with --report-only, --status, --collect or --submit, and when negative (from the library: the
+// command line's own check refuses it first, tests/bad_input).
+TEST_F(StudyRun, StopAfterIsRefusedWithoutRunsOrBelowZero) {
+  const ScratchDir scratch("trapdem-study-stop-after-refused");
+  const fs::path file = write_study_file(scratch.path()), out = scratch.path() / "out";
+  for (int mode = 0; mode < 4; ++mode) {
+    app::StudyOptions o = one_thread_study(file, out);
+    o.stop_after_seconds = 60.0;
+    o.report_only = mode == 0;
+    o.status = mode == 1;
+    o.collect = mode == 2;
+    if (mode == 3) o.submit.submit = "slurm";
+    EXPECT_THROW(app::run_study(o), InputError) << mode;
+  }
+  app::StudyOptions negative = one_thread_study(file, out);
+  negative.stop_after_seconds = -1.0;
+  EXPECT_THROW(app::run_study(negative), InputError);
+  EXPECT_FALSE(fs::exists(out));
 }
 
 TEST_F(StudyRun, ACaseWhoseConfigurationChangedIsRefused) {
