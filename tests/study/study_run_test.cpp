@@ -377,7 +377,8 @@ TEST_F(StudyRun, KilledDuringTheSecondCaseAndStartedAgainGivesTheSameReport) {
 
 // --stop-after: a budget of a nanosecond stops the first run with its checkpoint at its first look at
 // the clock (the budget's clock starts with that run) and starts no other; the same command again,
-// with a budget no tiny run nears, resumes it, runs the second and gives the straight study's numbers.
+// with a budget no tiny run nears, resumes it, runs the second and gives the straight study's numbers;
+// a budget spent when a run would start starts none.
 TEST_F(StudyRun, StopAfterStopsTheRunningCaseWithItsCheckpointAndTheSameCommandCarriesOn) {
   const ScratchDir scratch("trapdem-study-stop-after");
   const fs::path file = write_study_file(scratch.path()), out = scratch.path() / "out";
@@ -397,6 +398,19 @@ TEST_F(StudyRun, StopAfterStopsTheRunningCaseWithItsCheckpointAndTheSameCommandC
   EXPECT_NE(log.find("[1/2] smooth: resuming from its checkpoint"), std::string::npos) << log;
   EXPECT_NE(log.find("[2/2] rough: running"), std::string::npos) << log;
   EXPECT_EQ(numbers_without_cost(summary_of(out)), numbers_without_cost(summary_of(StudyRun::out())));
+
+  // The budget spent between two runs: the first case, its run.json removed, resumes from its last
+  // checkpoint (written when it finished: nothing left to step, so it finishes at once whatever the
+  // budget), and the second, removed, is then not started.
+  fs::remove(out / "cases" / "smooth" / "run.json");
+  fs::remove_all(out / "cases" / "rough");
+  o.stop_after_seconds = 1e-9;
+  ASSERT_EQ(app::run_study(o), kExitInterrupted);
+  EXPECT_TRUE(fs::exists(out / "cases" / "smooth" / "run.json"));
+  EXPECT_FALSE(fs::exists(out / "cases" / "rough"));
+  log = read_text_file(out / "study.log");
+  EXPECT_NE(log.find("[2/2] rough: not started: the study's time budget of 1e-09 s (--stop-after) is spent"),
+            std::string::npos) << log;
 }
 
 // A budget is for the runs run here, and a number of seconds: refused, before anything is written,
