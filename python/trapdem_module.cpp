@@ -20,8 +20,10 @@
 #include "piv/piv_folder.hpp"
 #include "piv/synthetic_sequence.hpp"
 #include "study/element_folder.hpp"
+#include "study/ground_reaction_overlay.hpp"
 #include "study/run_analysis.hpp"
 #include "study/study_definition.hpp"
+#include "study/strain_panel_of_runs.hpp"
 #include "study/study_runner.hpp"
 
 namespace py = pybind11;
@@ -273,6 +275,41 @@ int synth(const std::string& field, const std::string& out, int width, int heigh
   return write_synthetic_sequence(o).images;
 }
 
+// Several runs in one figure, as `trapdem figure`: their gamma_max maps on one colour scale, or
+// (grc) their ground reaction curves on one chart. Returns the scale drawn (None for the curves)
+// and the curves' legend entries (None for the maps).
+py::dict figure(const std::vector<std::string>& folders, const std::string& out, bool grc,
+                const std::vector<std::string>& labels, const std::string& at, const std::string& reference,
+                const std::string& view, double max_strain) {
+  const std::vector<fs::path> dirs(folders.begin(), folders.end());
+  py::dict d;
+  if (grc) {
+    if (dirs.empty()) throw InputError("figure: give one or more run folders");
+    std::vector<std::string> legend;
+    {
+      py::gil_scoped_release release;
+      legend = write_ground_reaction_overlay(out, dirs, labels);
+    }
+    d["max_strain"] = py::none();
+    d["legend"] = legend;
+    return d;
+  }
+  RunPanelOptions o;
+  o.at = at;
+  o.reference = reference;
+  o.view = view;
+  o.labels = labels;
+  o.max_strain = max_strain;
+  RunPanel panel;
+  {
+    py::gil_scoped_release release;
+    panel = write_strain_panel_of_runs(out, dirs, o);
+  }
+  d["max_strain"] = panel.max_strain;
+  d["legend"] = py::none();
+  return d;
+}
+
 // A study (docs/study.md) run, resumed or reported into `out`, as `trapdem study`.
 py::dict study(const std::string& file, const std::string& scale_name, const std::string& out_dir,
                const std::string& presets, int threads, bool quiet, bool report_only, double stop_after_seconds) {
@@ -317,6 +354,8 @@ PYBIND11_MODULE(_trapdem, m) {
   m.def("element", &element, py::arg("config_file"), py::arg("overrides"), py::arg("out"), py::arg("threads"));
   m.def("piv", &piv, py::arg("images"), py::arg("out"), py::arg("subset"), py::arg("step"), py::arg("threads"),
         py::arg("scale"), py::arg("origin"), py::arg("figures"));
+  m.def("figure", &figure, py::arg("folders"), py::arg("out"), py::arg("grc"), py::arg("labels"), py::arg("at"),
+        py::arg("reference"), py::arg("view"), py::arg("max_strain"));
   m.def("study", &study, py::arg("file"), py::arg("scale"), py::arg("out"), py::arg("presets"), py::arg("threads"),
         py::arg("quiet"), py::arg("report_only"), py::arg("stop_after_seconds"));
   m.def("synth", &synth, py::arg("field"), py::arg("out"), py::arg("width"), py::arg("height"), py::arg("images"),

@@ -274,6 +274,21 @@ def element(config=None, *, preset: str | None = None, out=None, overrides: Iter
     return _trapdem.element(file, list(overrides), str(out or ""), threads)
 
 
+def figure(folders: Iterable, out, *, grc: bool = False, labels: Iterable[str] = (), at: str = "",
+           reference: str = "0mm", view: str = "front", max_strain: float = 0.0) -> dict:
+    """Several run folders in one figure, as ``trapdem figure``: their maximum shear strain maps side by
+    side on one colour scale and one length scale (each analysed in memory at `at`, e.g. "80mm",
+    default each run's last snapshot, from `reference`), or with `grc` their ground reaction curves on
+    one chart. `out`'s extension picks PNG, SVG or PDF; `labels` titles the panels (default: the runs'
+    names); `max_strain` the top of the colour scale (0: the largest of the runs' own). Returns the
+    file (`out`), the scale drawn (`max_strain`; None for the curves) and the curves' `legend`
+    entries (None for the maps)."""
+    r = _trapdem.figure([str(pathlib.Path(f)) for f in folders], str(out), grc, list(labels), at, reference, view,
+                        max_strain)
+    return {"out": pathlib.Path(out), "max_strain": r["max_strain"],
+            "legend": None if r["legend"] is None else list(r["legend"])}
+
+
 def study(file, *, scale: str = "", out=None, threads: int = 0, quiet: bool = False, report_only: bool = False,
           stop_after: float = 0.0) -> dict:
     """A study (docs/study.md) run, resumed (its finished runs skipped) and reported into `out`

@@ -190,6 +190,29 @@ def test_two_runs_in_one_process_are_the_same(scratch):
     assert (a.path / "trapdoor.csv").read_bytes() == (b.path / "trapdoor.csv").read_bytes()
 
 
+def test_a_figure_of_runs_is_the_programs(scratch, short_run):
+    # The strain maps on one scale: the same file as `trapdem figure` writes, the scale it drew.
+    program("figure", short_run.path, short_run.path, "--labels", "A", "B", "--out", scratch / "cli.png")
+    panel = trapdem.figure([short_run.path, short_run.path], scratch / "py.png", labels=["A", "B"])
+    assert panel["out"] == scratch / "py.png" and panel["legend"] is None
+    assert (scratch / "py.png").read_bytes() == (scratch / "cli.png").read_bytes()
+    assert panel["max_strain"] > 0.0
+    fixed = trapdem.figure([short_run.path], scratch / "fixed.svg", max_strain=0.25)
+    assert fixed["max_strain"] == 0.25 and (scratch / "fixed.svg").read_text().lstrip().startswith("<?xml")
+    # The ground reaction curves: the legend is the run's name.
+    curves = trapdem.figure([short_run.path], scratch / "grc.png", grc=True)
+    assert curves["max_strain"] is None and curves["legend"] == [short_run.config["name"]]
+    assert (scratch / "grc.png").read_bytes()[:8] == b"\x89PNG\r\n\x1a\n"
+    # Bad input, before any analysis: labels not one per folder, a negative scale, no folder.
+    with pytest.raises(trapdem.InputError, match=r"--labels: 1 labels for 2 run folders"):
+        trapdem.figure([short_run.path, short_run.path], scratch / "x.png", labels=["A"])
+    with pytest.raises(trapdem.InputError, match=r"--max-strain -1"):
+        trapdem.figure([short_run.path], scratch / "x.png", max_strain=-1.0)
+    with pytest.raises(trapdem.InputError, match=r"one or more run folders"):
+        trapdem.figure([], scratch / "x.png")
+    assert not (scratch / "x.png").exists()
+
+
 def test_a_study_runs_and_reports(scratch):
     # One case at one scale, the tiny preset cut short: its run, the report and its summary.
     definition = scratch / "sweep.toml"
