@@ -193,6 +193,10 @@ const std::vector<BadInput>& table() {
       {"StudyStopAfterNegative", "study {IN} --stop-after -5", "name = \"s\"\n", 2, "--stop-after"},
       {"StudyStopAfterWithStatus", "study {IN} --out {EMPTY}/st --status --stop-after 60",
        "[scales.s]\npreset = \"tiny\"\n[cases.a]\nlabel = \"A\"\n", 2, "--stop-after: a budget for the runs here"},
+      // ---- figure
+      {"FigureMaxStrainNegative", "figure {RUN} --max-strain -1 --out {EMPTY}/p.png", nullptr, 2, "--max-strain -1: expected"},
+      {"FigureLabelsNotOnePerRun", "figure {RUN} {RUN} --labels A --out {EMPTY}/p.png", nullptr, 2, "--labels: 1 labels for 2 run folders"},
+      {"FigureBadExtension", "figure {RUN} --out {EMPTY}/p.gif", nullptr, 2, "p.gif"},
       // ---- calibrate
       {"CalibrateMissingVary", "calibrate {TINY} --target {EMPTY} --at 10mm", nullptr, 2, "--vary is required"},
       {"CalibrateNoTarget", "calibrate {TINY} --vary trapdoor.rate=0.1,0.2 --target {EMPTY} --at 10mm --out {EMPTY}/c", nullptr, 2, "piv.h5"},
