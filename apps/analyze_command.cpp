@@ -9,7 +9,6 @@
 #include "core/errors.hpp"
 #include "plot/figure_format.hpp"
 #include "study/ground_reaction_overlay.hpp"
-#include "study/strain_panel_of_runs.hpp"
 
 namespace fs = std::filesystem;
 
@@ -34,18 +33,11 @@ int run_figure(const FigureOptions& o) {
   if (o.grc) {
     if (dirs.empty()) throw InputError("trapdem figure: give one or more run folders");
     plot::figure_format_of(out);  // a bad extension fails before the work
-    const auto legend = write_ground_reaction_overlay(out, dirs, o.labels);
+    const auto legend = write_ground_reaction_overlay(out, dirs, o.panel.labels);
     fmt::print("ground reaction curves of {} runs written to {}\n", legend.size(), out.string());
     return 0;
   }
-  RunPanelOptions panel_options;
-  panel_options.at = o.at;
-  panel_options.reference = o.reference;
-  panel_options.view = o.view;
-  panel_options.front_depth = o.front_depth;
-  panel_options.labels = o.labels;
-  panel_options.max_strain = o.max_strain;
-  const RunPanel panel = write_strain_panel_of_runs(out, dirs, panel_options);
+  const RunPanel panel = write_strain_panel_of_runs(out, dirs, o.panel);
   fmt::print("panel of {} runs (gamma_max scale 0 to {:g}) written to {}\n", panel.runs, panel.max_strain, out.string());
   return 0;
 }

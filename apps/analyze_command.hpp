@@ -9,6 +9,7 @@
 #include <vector>
 
 #include "study/run_analysis.hpp"
+#include "study/strain_panel_of_runs.hpp"
 
 namespace trapdem::app {
 
@@ -19,12 +20,7 @@ struct FigureOptions {
   std::vector<std::string> dirs;
   std::string out;                         // empty: panel.png (grc.png with --grc)
   bool grc = false;                        // the ground reaction curves instead of the strain panel
-  std::vector<std::string> labels;         // legend/panel titles, one per run (default: the runs' names)
-  std::string at;
-  std::string reference = "0mm";
-  std::string view = "front";
-  std::string front_depth;
-  double max_strain = 0.0;                 // colour scale top; 0: the largest of the runs' own
+  RunPanelOptions panel;                   // the panel's; its labels are the curves' legend too
 };
 
 int run_figure(const FigureOptions& options);

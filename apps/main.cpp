@@ -158,13 +158,13 @@ int main(int argc, char** argv) {
   fig->add_option("dirs", figure.dirs, "Run folders")->required();
   fig->add_option("--out", figure.out, "Figure file; .png, .svg or .pdf picks the format (default panel.png, grc.png with --grc)");
   fig->add_flag("--grc", figure.grc, "The runs' ground reaction curves (trapdoor.csv) on one chart");
-  fig->add_option("--labels", figure.labels, "Panel titles / legend entries, one per run (default: the runs' names)")
+  fig->add_option("--labels", figure.panel.labels, "Panel titles / legend entries, one per run (default: the runs' names)")
       ->delimiter(',');
-  fig->add_option("--at", figure.at, "Trapdoor displacement, e.g. 80mm (default: each run's last snapshot)");
-  fig->add_option("--reference", figure.reference, "Reference trapdoor displacement (default 0mm)");
-  fig->add_option("--view", figure.view, "front or all")->check(CLI::IsMember({"front", "all"}));
-  fig->add_option("--front-depth", figure.front_depth, "Front view depth from the glass");
-  fig->add_option("--max-strain", figure.max_strain, "Top of the gamma_max colour scale (default: automatic)");
+  fig->add_option("--at", figure.panel.at, "Trapdoor displacement, e.g. 80mm (default: each run's last snapshot)");
+  fig->add_option("--reference", figure.panel.reference, "Reference trapdoor displacement (default 0mm)");
+  fig->add_option("--view", figure.panel.view, "front or all")->check(CLI::IsMember({"front", "all"}));
+  fig->add_option("--front-depth", figure.panel.front_depth, "Front view depth from the glass");
+  fig->add_option("--max-strain", figure.panel.max_strain, "Top of the gamma_max colour scale (default: automatic)");
 
   trapdem::app::SinkholeOptions sinkhole;
   auto* sink = app.add_subcommand("sinkhole", "Maximum sinkhole size by scenario supposition (SANS 1936); --from DIR: beside a DEM run's");

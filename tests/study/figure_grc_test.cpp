@@ -83,7 +83,7 @@ TEST(FigureGrc, OneCurvePerRun) {
             (std::vector<std::string>{"A", "B", "C"}));
   // As SVG, with the labels given; the extension picks the format.
   o.out = (root / "grc.svg").string();
-  o.labels = {"loose", "dense", "other"};
+  o.panel.labels = {"loose", "dense", "other"};
   ASSERT_EQ(app::run_figure(o), 0);
   std::ifstream svg(root / "grc.svg");
   std::string head(5, ' ');
@@ -110,7 +110,7 @@ TEST(FigureGrc, BadInputNamesTheProblem) {
   o.out = (root / "grc.gif").string();
   EXPECT_THROW(app::run_figure(o), InputError);
   o.out = (root / "grc.png").string();
-  o.labels = {"one", "two"};
+  o.panel.labels = {"one", "two"};
   EXPECT_THROW(app::run_figure(o), InputError);
 }
 
