@@ -1,13 +1,10 @@
 #include "analyze_command.hpp"
 
-#include <algorithm>
 #include <cstdio>
 
 #include <fmt/format.h>
 
 #include "analysis/analysis_output.hpp"
-#include "core/errors.hpp"
-#include "plot/figure_format.hpp"
 #include "study/ground_reaction_overlay.hpp"
 
 namespace fs = std::filesystem;
@@ -31,8 +28,6 @@ int run_figure(const FigureOptions& o) {
   const fs::path out = o.out.empty() ? fs::path(o.grc ? "grc.png" : "panel.png") : fs::path(o.out);
   const std::vector<fs::path> dirs(o.dirs.begin(), o.dirs.end());
   if (o.grc) {
-    if (dirs.empty()) throw InputError("trapdem figure: give one or more run folders");
-    plot::figure_format_of(out);  // a bad extension fails before the work
     const auto legend = write_ground_reaction_overlay(out, dirs, o.panel.labels);
     fmt::print("ground reaction curves of {} runs written to {}\n", legend.size(), out.string());
     return 0;

@@ -284,7 +284,6 @@ py::dict figure(const std::vector<std::string>& folders, const std::string& out,
   const std::vector<fs::path> dirs(folders.begin(), folders.end());
   py::dict d;
   if (grc) {
-    if (dirs.empty()) throw InputError("figure: give one or more run folders");
     std::vector<std::string> legend;
     {
       py::gil_scoped_release release;

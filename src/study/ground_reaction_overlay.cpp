@@ -10,6 +10,7 @@
 #include "experiment/run_folder.hpp"
 #include "io/text_file.hpp"
 #include "plot/colour_map.hpp"
+#include "plot/figure_format.hpp"
 #include "plot/line_chart.hpp"
 
 namespace fs = std::filesystem;
@@ -35,6 +36,7 @@ std::vector<std::string> ground_reaction_legend(const std::vector<fs::path>& dir
 std::vector<std::string> write_ground_reaction_overlay(const fs::path& out, const std::vector<fs::path>& dirs,
                                                        const std::vector<std::string>& labels) {
   if (dirs.empty()) throw InputError("trapdem figure --grc: give one or more run folders");
+  plot::figure_format_of(out);  // a bad extension fails before the work
   std::vector<std::string> names;
   std::vector<std::vector<GroundReactionRow>> curves;
   std::vector<double> widths;
