@@ -252,6 +252,18 @@ int main(int argc, char** argv) {
                         "Stop with the running case's checkpoint after this many seconds of wall clock, counted "
                         "from the first run's start; no run starts after it (the same command carries on)")
       ->check(CLI::PositiveNumber);
+  study_cmd->add_option("--case", study.cases,
+                        "Run only this case's runs (repeatable); the others are left as they are, the report "
+                        "covers every finished run");
+  study_cmd->add_option("--seed", study.seeds,
+                        "Run only the runs with this packing seed (repeatable; a replicate scale's seeds)")
+      ->check(CLI::Validator(
+          [](std::string& text) -> std::string {
+            const bool digits = !text.empty() && text.size() <= 19 &&
+                                text.find_first_not_of("0123456789") == std::string::npos;
+            return digits ? std::string() : "expected a packing seed, an integer >= 0, not '" + text + "'";
+          },
+          "SEED"));
   study_cmd->add_option("--format", study.format, "Figure format of the report and the runs' analyses: png (default), svg or pdf")->check(CLI::IsMember({"png", "svg", "pdf"}, CLI::ignore_case));
   add_submit_options(*study_cmd, study.submit);
 

@@ -47,6 +47,9 @@ int run_study(const StudyOptions& o) {
   if (modes > 0 && o.stop_after_seconds > 0.0)
     throw InputError("--stop-after: a budget for the runs here, not for --report-only, --collect, --status or "
                      "--submit (a Slurm task's limit is --time)");
+  if (modes > 0 && !(o.cases.empty() && o.seeds.empty()))
+    throw InputError("--case, --seed: choose the runs run here, not for --report-only, --collect, --status or "
+                     "--submit (the report covers every finished run)");
   if (o.stop_after_seconds < 0.0)  // the command line's check refuses it; a caller of the library may not
     throw InputError(fmt::format("--stop-after: {:g} s: expected a positive number of seconds (0: no budget)",
                                  o.stop_after_seconds));
@@ -100,6 +103,7 @@ int run_study(const StudyOptions& o) {
   } else {
     StudyRunSettings settings{preset_directory(), o.threads, o.quiet, {}};
     settings.stop_after_seconds = o.stop_after_seconds;
+    settings.only = {o.cases, o.seeds};
     if (!run_study_in_folder(study, scale, out, settings)) return kExitInterrupted;
   }
   const fs::path page = write_study_outputs(study, scale, out, o.quiet, preset_directory(), format);

@@ -2,6 +2,7 @@
 // `trapdem study STUDY.toml [--out DIR] [--scale NAME]`: the study runner of study/study_runner.hpp
 // on the command line (docs/study.md); with `--submit slurm` its runs go to a Slurm cluster
 // (study/slurm_submission.hpp), `--status` says where each run stands (study/study_status.hpp).
+#include <cstdint>
 #include <filesystem>
 #include <string>
 #include <vector>
@@ -27,6 +28,8 @@ struct StudyOptions {
   bool status = false;        // no running: where each run stands
   std::string format = "png"; // the report's and the runs' analysis figures: png | svg | pdf
   double stop_after_seconds = 0.0;  // > 0: the study's wall-clock budget (StudyRunSettings)
+  std::vector<std::string> cases;       // --case: only these cases' runs (StudyRunSettings::only)
+  std::vector<std::uint64_t> seeds;     // --seed: only the runs with these packing seeds
   SubmitOptions submit;
 };
 

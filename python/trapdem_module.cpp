@@ -311,7 +311,8 @@ py::dict figure(const std::vector<std::string>& folders, const std::string& out,
 
 // A study (docs/study.md) run, resumed or reported into `out`, as `trapdem study`.
 py::dict study(const std::string& file, const std::string& scale_name, const std::string& out_dir,
-               const std::string& presets, int threads, bool quiet, bool report_only, double stop_after_seconds) {
+               const std::string& presets, int threads, bool quiet, bool report_only, double stop_after_seconds,
+               const std::vector<std::string>& cases, const std::vector<std::uint64_t>& seeds) {
   const StudyDefinition definition = load_study(file);
   const StudyScale& scale = definition.scale(scale_name.empty() ? definition.default_scale : scale_name);
   const fs::path out = out_dir.empty() ? fs::path("trapdem-out") / (definition.name + "-" + scale.name) : fs::path(out_dir);
@@ -323,7 +324,7 @@ py::dict study(const std::string& file, const std::string& scale_name, const std
     if (report_only) {
       if (!holds_study(out)) throw InputError(fmt::format("report only: {} holds no study", out.string()));
       claim_study_folder(definition, scale, out);
-    } else if (StudyRunSettings settings{presets, threads, quiet, terminal, stop_after_seconds};
+    } else if (StudyRunSettings settings{presets, threads, quiet, terminal, stop_after_seconds, {cases, seeds}};
                !run_study_in_folder(definition, scale, out, settings)) {
       py::gil_scoped_acquire acquire;
       d["finished"] = false;
@@ -356,7 +357,7 @@ PYBIND11_MODULE(_trapdem, m) {
   m.def("figure", &figure, py::arg("folders"), py::arg("out"), py::arg("grc"), py::arg("labels"), py::arg("at"),
         py::arg("reference"), py::arg("view"), py::arg("max_strain"));
   m.def("study", &study, py::arg("file"), py::arg("scale"), py::arg("out"), py::arg("presets"), py::arg("threads"),
-        py::arg("quiet"), py::arg("report_only"), py::arg("stop_after_seconds"));
+        py::arg("quiet"), py::arg("report_only"), py::arg("stop_after_seconds"), py::arg("cases"), py::arg("seeds"));
   m.def("synth", &synth, py::arg("field"), py::arg("out"), py::arg("width"), py::arg("height"), py::arg("images"),
         py::arg("noise"), py::arg("magnitude"), py::arg("seed"));
 }

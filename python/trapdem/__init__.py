@@ -290,19 +290,28 @@ def figure(folders: Iterable, out, *, grc: bool = False, labels: Iterable[str] =
 
 
 def study(file, *, scale: str = "", out=None, threads: int = 0, quiet: bool = False, report_only: bool = False,
-          stop_after: float = 0.0) -> dict:
+          stop_after: float = 0.0, cases: Iterable[str] = (), seeds: Iterable[int] = ()) -> dict:
     """A study (docs/study.md) run, resumed (its finished runs skipped) and reported into `out`
     (default trapdem-out/<study>-<scale>), as ``trapdem study``: returns the folder, the report's
     page and its summary (summary.json as a dict), and `finished` True. Its lines and its runs'
     progress go to sys.stdout unless `quiet` (then to study.log and each run.log only). Ctrl-C stops
     it with its running case's checkpoint and raises KeyboardInterrupt; calling it again carries on.
     `stop_after` (s of wall clock, from its first run's start; as ``--stop-after``) stops it the same
-    way but returns, with `finished` False and no report or summary (None)."""
+    way but returns, with `finished` False and no report or summary (None). `cases` and `seeds` (as
+    ``--case`` and ``--seed``) run only those cases' runs and those packing seeds, leaving the others
+    as they are; the report covers every finished run."""
     if stop_after < 0.0 or (report_only and stop_after > 0.0):
         raise ValueError(f"stop_after = {stop_after!r}: expected seconds > 0 for the runs (0: no budget), "
                          "not with report_only")
+    cases, seeds = [str(c) for c in cases], list(seeds)
+    if report_only and (cases or seeds):
+        raise ValueError("cases, seeds: choose the runs run here, not with report_only (the report covers every "
+                         "finished run)")
+    for seed in seeds:
+        if isinstance(seed, bool) or not isinstance(seed, int) or seed < 0:
+            raise ValueError(f"seeds: {seed!r}: expected a packing seed, an integer >= 0")
     r = _trapdem.study(str(file), scale, str(out or ""), str(_preset_directory()), threads, quiet, report_only,
-                       stop_after)
+                       stop_after, cases, seeds)
     if not r["finished"]:
         if stop_after > 0.0:
             return {"out": pathlib.Path(r["out"]), "report": None, "summary": None, "finished": False}

@@ -180,8 +180,16 @@ bool run_study_cases(const StudyDefinition& study, const StudyScale& scale, cons
   // Every run's configuration first, and each against what its folder holds: a typo in the fourth
   // case, or a case changed since it ran, should not wait for three runs.
   const std::vector<std::vector<CaseRun>> runs = checked_study_runs(study, scale, out, settings.preset_directory);
-  std::size_t total = 0;
-  for (const auto& case_runs_of : runs) total += case_runs_of.size();
+  check_run_selection(settings.only, study, runs);
+  std::size_t total = 0, all = 0;
+  for (std::size_t k = 0; k < study.cases.size(); ++k)
+    for (const CaseRun& r : runs[k]) {
+      ++all;
+      if (settings.only.selects(study.cases[k].name, r.seed)) ++total;
+    }
+  if (!settings.only.everything())
+    log_study_line(out, fmt::format("{} of the study's {} runs selected ({})", total, all, settings.only.describe()),
+                   quiet, settings.terminal);
 
   std::size_t counted = 0;
   // The budget's clock starts with the first run that starts or resumes (so that a tiny budget still
@@ -189,7 +197,10 @@ bool run_study_cases(const StudyDefinition& study, const StudyScale& scale, cons
   std::optional<std::chrono::steady_clock::time_point> first_run_started;
   for (std::size_t k = 0; k < study.cases.size(); ++k) {
     const StudyCase& c = study.cases[k];
+    bool case_selected = false;
     for (const CaseRun& r : runs[k]) {
+      if (!settings.only.selects(c.name, r.seed)) continue;
+      case_selected = true;
       const RunFolder folder(r.dir);
       const fs::path& dir = folder.path();
       const std::string counter = fmt::format("[{}/{}] {}", ++counted, total, run_title(c, r));
@@ -233,7 +244,7 @@ bool run_study_cases(const StudyDefinition& study, const StudyScale& scale, cons
       }
       log_study_line(out, fmt::format("{}: finished", counter), quiet, settings.terminal);
     }
-    if (study.report.element_test) run_case_element_test_once(study, c, scale, out, settings);
+    if (study.report.element_test && case_selected) run_case_element_test_once(study, c, scale, out, settings);
   }
   return true;
 }

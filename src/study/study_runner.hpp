@@ -10,6 +10,7 @@
 
 #include "core/line_sink.hpp"
 #include "plot/figure_format.hpp"
+#include "study/run_selection.hpp"
 #include "study/study_definition.hpp"
 
 namespace trapdem {
@@ -23,6 +24,8 @@ struct StudyRunSettings {
   // is spent stops with its checkpoint, and no run starts after it (a shared host's working hours, a
   // batch job's time limit); the same call again carries on.
   double stop_after_seconds = 0.0;
+  // The runs this call runs (the others are left as they are); every run by default.
+  RunSelection only{};
 };
 
 // The case's configuration at the scale as `trapdem run` resolves it (resolved.toml's text); throws
@@ -66,7 +69,8 @@ std::filesystem::path case_base_file(const CaseRun& run, const std::filesystem::
 void run_case_element_test_once(const StudyDefinition& study, const StudyCase& study_case, const StudyScale& scale,
                                 const std::filesystem::path& out, const StudyRunSettings& settings);
 
-// Runs (or resumes, or skips) every case of `study` at `scale` into out/cases/<name>. Returns false
+// Runs (or resumes, or skips) every case of `study` at `scale` into out/cases/<name> (the runs of
+// settings.only: InputError for a case or seed it does not have, check_run_selection). Returns false
 // if a run was interrupted (SIGINT/SIGTERM or the settings' stop_after_seconds: its checkpoint is
 // written) or the budget was spent before a run started. Throws InputError if a case's folder holds
 // a run of another configuration.

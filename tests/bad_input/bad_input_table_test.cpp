@@ -193,6 +193,13 @@ const std::vector<BadInput>& table() {
       {"StudyStopAfterNegative", "study {IN} --stop-after -5", "name = \"s\"\n", 2, "--stop-after"},
       {"StudyStopAfterWithStatus", "study {IN} --out {EMPTY}/st --status --stop-after 60",
        "[scales.s]\npreset = \"tiny\"\n[cases.a]\nlabel = \"A\"\n", 2, "--stop-after: a budget for the runs here"},
+      {"StudyCaseUnknown", "study {IN} --out {EMPTY}/sc --case nosuch",
+       "[scales.s]\npreset = \"tiny\"\n[cases.a]\nlabel = \"A\"\n", 2, "--case nosuch: study"},
+      {"StudySeedNoRunPacksWith", "study {IN} --out {EMPTY}/ss --seed 99",
+       "[scales.s]\npreset = \"tiny\"\n[cases.a]\nlabel = \"A\"\n", 2, "--seed 99: no run of study"},
+      {"StudySeedNegative", "study {IN} --seed -3", "name = \"s\"\n", 2, "--seed"},
+      {"StudyCaseWithReportOnly", "study {IN} --out {EMPTY}/sr --report-only --case a",
+       "[scales.s]\npreset = \"tiny\"\n[cases.a]\nlabel = \"A\"\n", 2, "--case, --seed: choose the runs run here"},
       // ---- figure
       {"FigureMaxStrainNegative", "figure {RUN} --max-strain -1 --out {EMPTY}/p.png", nullptr, 2, "--max-strain -1: expected"},
       {"FigureLabelsNotOnePerRun", "figure {RUN} {RUN} --labels A --out {EMPTY}/p.png", nullptr, 2, "--labels: 1 labels for 2 run folders"},

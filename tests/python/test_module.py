@@ -235,3 +235,17 @@ def test_a_study_runs_and_reports(scratch):
     assert "findings" in result["summary"]
     again = trapdem.study(definition, out=scratch / "study", threads=1, report_only=True)
     assert again["report"] == result["report"]
+    # cases= and seeds=: a case the study does not have, a seed no run packs with (the tiny preset's
+    # is 7), a selection with report_only: refused; the case's own seed runs nothing new.
+    with pytest.raises(trapdem.InputError, match="no such case"):
+        trapdem.study(definition, out=scratch / "study", threads=1, cases=["dense"])
+    with pytest.raises(trapdem.InputError, match="their packing seeds: 7"):
+        trapdem.study(definition, out=scratch / "study", threads=1, seeds=[8])
+    for bad in ([-1], [True], ["7"]):
+        with pytest.raises(ValueError, match="seeds"):
+            trapdem.study(definition, out=scratch / "study", threads=1, seeds=bad)
+    with pytest.raises(ValueError, match="report_only"):
+        trapdem.study(definition, out=scratch / "study", threads=1, report_only=True, cases=["loose"])
+    chosen = trapdem.study(definition, out=scratch / "study", threads=1, cases=["loose"], seeds=[7])
+    assert chosen["finished"] is True
+    assert "finished before, skipped" in (scratch / "study" / "study.log").read_text()

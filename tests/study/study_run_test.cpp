@@ -434,6 +434,60 @@ TEST_F(StudyRun, StopAfterIsRefusedWithoutRunsOrBelowZero) {
   EXPECT_FALSE(fs::exists(out));
 }
 
+// --case and --seed: a replicate study (seeds 7 and 8 of each case) run one packing of one case at a
+// time into its folder, the other runs left alone; the same folder then takes the rest of a case;
+// a case or seed the study does not have is refused with the study's own (tests/bad_input: the
+// command line's wording).
+TEST(StudyRunSelection, CaseAndSeedRunOnlyTheChosenRunsAndTheRestFollowInTheSameFolder) {
+  const ScratchDir scratch("trapdem-study-selection");
+  std::string text = kStudy;
+  text.insert(text.find('\n') + 1, "replicates = 2\n");
+  const fs::path file = write_study_file(scratch.path(), text), out = scratch.path() / "out";
+  app::StudyOptions o = one_thread_study(file, out);
+  o.cases = {"rough"};
+  o.seeds = {8};
+  ASSERT_EQ(app::run_study(o), 0);
+  EXPECT_TRUE(fs::exists(out / "cases" / "rough" / "seed-8" / "run.json"));
+  EXPECT_FALSE(fs::exists(out / "cases" / "rough" / "seed-7"));
+  EXPECT_FALSE(fs::exists(out / "cases" / "smooth"));
+  EXPECT_TRUE(fs::exists(out / "report" / "summary.json")) << "the report covers the finished runs";
+  std::string log = read_text_file(out / "study.log");
+  EXPECT_NE(log.find("1 of the study's 4 runs selected (cases rough; seeds 8)"), std::string::npos) << log;
+  EXPECT_NE(log.find("[1/1] rough"), std::string::npos) << log;
+
+  o.cases = {"smooth"};
+  o.seeds = {};
+  ASSERT_EQ(app::run_study(o), 0);
+  EXPECT_TRUE(fs::exists(out / "cases" / "smooth" / "seed-7" / "run.json"));
+  EXPECT_TRUE(fs::exists(out / "cases" / "smooth" / "seed-8" / "run.json"));
+  EXPECT_FALSE(fs::exists(out / "cases" / "rough" / "seed-7"));
+  log = read_text_file(out / "study.log");
+  EXPECT_NE(log.find("2 of the study's 4 runs selected (cases smooth)"), std::string::npos) << log;
+  EXPECT_EQ(summary_of(out)["cases"][0]["runs"].size(), 2u) << "smooth: both seeds in the report";
+
+  // Everything left: the one rough run not yet run; the three finished are skipped.
+  o.cases = {};
+  ASSERT_EQ(app::run_study(o), 0);
+  EXPECT_TRUE(fs::exists(out / "cases" / "rough" / "seed-7" / "run.json"));
+  log = read_text_file(out / "study.log");
+  EXPECT_NE(log.find("[4/4] rough seed 8: finished before, skipped"), std::string::npos) << log;
+
+  for (const auto& [cases, seeds, expected] :
+       {std::tuple<std::vector<std::string>, std::vector<std::uint64_t>, std::string>{
+            {"coarse"}, {}, "--case coarse: study 'tiny-pair' has no such case (its cases: smooth, rough)"},
+        {{"rough"}, {9}, "--seed 9: no run of case rough packs with it (their packing seeds: 7, 8)"}}) {
+    app::StudyOptions bad = one_thread_study(file, out);
+    bad.cases = cases;
+    bad.seeds = seeds;
+    try {
+      app::run_study(bad);
+      ADD_FAILURE() << expected;
+    } catch (const InputError& e) {
+      EXPECT_EQ(std::string(e.what()), expected);
+    }
+  }
+}
+
 TEST_F(StudyRun, ACaseWhoseConfigurationChangedIsRefused) {
   std::string text = kStudy;
   text.replace(text.find("kinetic_friction = 0.6"), 22, "kinetic_friction = 0.7");
