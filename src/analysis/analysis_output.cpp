@@ -5,6 +5,7 @@
 
 #include <fmt/format.h>
 
+#include "analysis/mechanism_shape.hpp"
 #include "core/length_text.hpp"
 #include "io/atomic_file.hpp"
 #include "io/hdf5_file.hpp"
@@ -191,9 +192,9 @@ Json metrics_json(const AnalysisResult& r) {
     at_fractions.push_back(one);
   }
   zone.set("at_higher_thresholds", at_fractions);
-  zone.set("shape", !std::isfinite(r.zone.shape_ratio) ? "unknown"
-                    : r.zone.shape_ratio < 1.3                 ? "columnar"
-                                                               : "elliptical");
+  const MechanismShapeResult shape = classify_mechanism_shape(r.bands, r.zone);
+  zone.set("shape", mechanism_shape_name(shape.shape));
+  zone.set("shape_from", mechanism_shape_basis_name(shape.basis));
   const double travel = r.trapdoor_travel();
   Json wall = Json::object();
   wall.set("warning", r.zone.wall_warning);
@@ -402,7 +403,10 @@ std::string metrics_table(const AnalysisResult& r) {
   for (const auto& w : r.zone.widths) {
     s += fmt::format(", at {} mm {} mm", num(w.height * 1e3, "{:.0f}"), num(w.width * 1e3, "{:.1f}"));
   }
-  s += fmt::format("; shape ratio {} (mid-height width / B)\n", num(r.zone.shape_ratio, "{:.2f}"));
+  const MechanismShapeResult shape = classify_mechanism_shape(r.bands, r.zone);
+  s += fmt::format("; shape ratio {} (mid-height width / B); {}{}\n", num(r.zone.shape_ratio, "{:.2f}"),
+                   mechanism_shape_name(shape.shape),
+                   shape.basis == MechanismShapeBasis::bands ? " (both bands vertical to the surface)" : "");
   if (const std::string text = side_wall_warning_text(r); !text.empty()) s += "  WARNING: " + text + "\n";
   for (const std::string& text : r.unmatched_ids) s += "  WARNING: " + text + "\n";
   return s;

@@ -3,6 +3,8 @@
 #include <algorithm>
 #include <cmath>
 
+#include <fmt/format.h>
+
 #include "analysis/sinkhole.hpp"
 
 namespace trapdem {
@@ -95,6 +97,19 @@ void mean_curve(const std::vector<std::vector<double>>& xs, const std::vector<st
   }
 }
 
+std::string combined_shape(const std::vector<CaseSummary>& replicates) {
+  std::size_t columnar = 0, known = 0;
+  for (const CaseSummary& r : replicates) {
+    if (r.shape.empty() || r.shape == "unknown") continue;
+    ++known;
+    if (r.shape == "columnar") ++columnar;
+  }
+  if (known == 0) return "unknown";
+  if (columnar == 0) return "elliptical";
+  if (columnar == known) return "columnar";
+  return fmt::format("mixed ({} of {} columnar)", columnar, known);
+}
+
 CaseSummary combine_replicates(const std::vector<CaseSummary>& replicates) {
   if (replicates.size() == 1) return replicates.front();
   CaseSummary m;
@@ -104,7 +119,7 @@ CaseSummary combine_replicates(const std::vector<CaseSummary>& replicates) {
   CaseEnsemble e;
   e.replicates = replicates;
   for (const SummaryMetric& metric : summary_metrics()) m.*metric.field = e.spread(metric.field).mean;
-  m.shape = !std::isfinite(m.shape_ratio) ? "unknown" : m.shape_ratio < 1.3 ? "columnar" : "elliptical";
+  m.shape = combined_shape(replicates);
   if (std::isfinite(m.dem_surface_diameter)) m.dem_size_class = size_class_name(classify_sinkhole(m.dem_surface_diameter));
   if (std::isfinite(m.supposition_surface_diameter))
     m.supposition_size_class = size_class_name(classify_sinkhole(m.supposition_surface_diameter));

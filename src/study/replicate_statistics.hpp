@@ -34,11 +34,14 @@ struct CaseEnsemble {
 };
 
 // The case's summary from its replicates: a single one as it is; else every metric the mean of the
-// replicates that measured it, the shape from the mean shape ratio (below 1.3 columnar, else
-// elliptical: the analysis' rule), the sinkhole classes from the mean diameters, the ground reaction
+// replicates that measured it, the shape the replicates' own (analysis/mechanism_shape.hpp) where
+// they agree, else "mixed (k of n columnar)", the sinkhole classes from the mean diameters, the ground reaction
 // curve the mean curve, the costs summed (particle-steps per second: their total over the total
 // time). Warnings stay with each replicate.
 CaseSummary combine_replicates(const std::vector<CaseSummary>& replicates);
+// The replicates' shapes ("columnar", "elliptical", "unknown" or empty) combined: the common one of
+// those known, "mixed (k of n columnar)" where they differ, "unknown" where none is known.
+std::string combined_shape(const std::vector<CaseSummary>& replicates);
 CaseEnsemble make_ensemble(std::vector<CaseSummary> replicates);
 
 // The mean of several curves y_k(x_k) on the first curve's x, as far as the shortest one reaches

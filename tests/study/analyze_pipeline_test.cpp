@@ -111,6 +111,10 @@ TEST(AnalyzePipeline, TwoPlanarBandsGiveTheirAngleAndWidth) {
   // The settled block widens upward: wider than B at the surface, elliptical-ish shape ratio > 1.
   EXPECT_GT(m["zone_of_influence"]["surface_width_m"].as_number(), B);
   EXPECT_GT(m["zone_of_influence"]["shape_ratio"].as_number(), 1.0);
+  // Bands at 20 deg make no column: the zone's width decides the shape, by its own rule.
+  EXPECT_EQ(m["zone_of_influence"]["shape_from"].as_string(), "zone_width");
+  EXPECT_EQ(m["zone_of_influence"]["shape"].as_string(),
+            m["zone_of_influence"]["shape_ratio"].as_number() < 1.3 ? "columnar" : "elliptical");
   EXPECT_NEAR(m["trapdoor"]["travel_over_B"].as_number(), 0.2, 1e-12);
 }
 

@@ -111,8 +111,9 @@ TEST(Findings, ShapesGroupTheCases) {
     cases[k].shape = shapes[k];
   }
   EXPECT_EQ(describe_shapes(cases),
-            "The zone of influence is elliptical in Calibrated and RF1 and columnar in RF2 (the shape ratio, the zone's "
-            "width at mid-height over B: below 1.3 columnar, else elliptical). (Not measured in RF3.)");
+            "The zone of influence is elliptical in Calibrated and RF1 and columnar in RF2 (columnar: both shear bands "
+            "within 10 deg of the vertical and traced to 90 % of the layer's height, or the zone's width at mid-height "
+            "below 1.3 B; else elliptical). (Not measured in RF3.)");
   cases.resize(2);
   EXPECT_EQ(describe_shapes(cases).rfind("The zone of influence is elliptical in every case (", 0), 0u);
 }

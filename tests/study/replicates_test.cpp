@@ -178,12 +178,28 @@ TEST(ReplicateStatistics, MeanCurveOnTheFirstCurvesPointsAsFarAsTheShortestReach
   EXPECT_DOUBLE_EQ(y_out[2], 0.5 * (0.6 + 0.4));
 }
 
+// The replicates' shapes: the common one of those known, else how many are columnar.
+TEST(ReplicateStatistics, TheShapeIsTheReplicatesOwnWhereTheyAgree) {
+  const auto combined = [](std::vector<std::string> shapes) {
+    std::vector<CaseSummary> r(shapes.size());
+    for (std::size_t k = 0; k < shapes.size(); ++k) r[k].shape = shapes[k];
+    return combined_shape(r);
+  };
+  EXPECT_EQ(combined({"columnar", "columnar", "columnar"}), "columnar");
+  EXPECT_EQ(combined({"elliptical", "unknown", "elliptical"}), "elliptical");
+  EXPECT_EQ(combined({"columnar", "elliptical", "columnar"}), "mixed (2 of 3 columnar)");
+  EXPECT_EQ(combined({"columnar", "", "elliptical"}), "mixed (1 of 2 columnar)");
+  EXPECT_EQ(combined({"unknown", ""}), "unknown");
+}
+
 TEST(ReplicateStatistics, TheCaseIsTheMeanOfItsReplicates) {
   std::vector<CaseSummary> r(2);
   r[0].min_load_ratio = 0.2;
   r[1].min_load_ratio = 0.4;
   r[0].shape_ratio = 1.2;
   r[1].shape_ratio = 1.6;
+  r[0].shape = "columnar";  // as each replicate's analysis called it
+  r[1].shape = "elliptical";
   r[0].band_angle_deg = 5.0;  // the second found no band: the mean of those that did
   r[0].cost.wall_seconds = 10.0;
   r[1].cost.wall_seconds = 30.0;
@@ -193,7 +209,7 @@ TEST(ReplicateStatistics, TheCaseIsTheMeanOfItsReplicates) {
   EXPECT_DOUBLE_EQ(e.mean.min_load_ratio, 0.3);
   EXPECT_DOUBLE_EQ(e.mean.band_angle_deg, 5.0);
   EXPECT_EQ(e.spread(&CaseSummary::band_angle_deg).n, 1u);
-  EXPECT_EQ(e.mean.shape, "elliptical");  // mean shape ratio 1.4
+  EXPECT_EQ(e.mean.shape, "mixed (1 of 2 columnar)");  // not the shape of the mean shape ratio, 1.4
   EXPECT_DOUBLE_EQ(e.mean.cost.wall_seconds, 40.0);
   EXPECT_DOUBLE_EQ(e.mean.cost.particle_steps_per_second, 1e5);
   EXPECT_NEAR(e.spread(&CaseSummary::min_load_ratio).sd, std::sqrt(0.02), 1e-15);
