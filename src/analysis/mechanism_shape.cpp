@@ -2,6 +2,8 @@
 
 #include <cmath>
 
+#include <fmt/format.h>
+
 namespace trapdem {
 
 const char* mechanism_shape_name(MechanismShape shape) {
@@ -41,6 +43,12 @@ MechanismShapeResult classify_mechanism_shape(const ShearBandPair& bands, const 
   if (!std::isfinite(zone.shape_ratio)) return {};
   return {zone.shape_ratio < rule.columnar_shape_ratio ? MechanismShape::columnar : MechanismShape::elliptical,
           MechanismShapeBasis::zone_width};
+}
+
+std::string mechanism_shape_rule_text(const MechanismShapeRule& rule) {
+  return fmt::format("columnar: both shear bands within {:g} deg of the vertical and traced to {:g} % of the layer's "
+                     "height, or the zone's width at mid-height below {:g} B; else elliptical",
+                     rule.band_max_angle_deg, 100.0 * rule.band_reach_fraction, rule.columnar_shape_ratio);
 }
 
 }  // namespace trapdem

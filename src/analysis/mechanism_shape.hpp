@@ -10,6 +10,8 @@
 // where the column drags its neighbours down by more than 5 % of the travel (RF1 with
 // elastic-plastic rolling at the paper's box: bands at 2.5 and 4.1 deg traced to 96 % of the
 // layer, the zone at mid-height 2.06 B; docs/study.md).
+#include <string>
+
 #include "analysis/shear_bands.hpp"
 #include "analysis/zone_of_influence.hpp"
 
@@ -45,5 +47,9 @@ struct MechanismShapeResult {
 // unknown without a finite shape ratio.
 MechanismShapeResult classify_mechanism_shape(const ShearBandPair& bands, const ZoneOfInfluence& zone,
                                               const MechanismShapeRule& rule = {});
+
+// The rule in words, for the report's findings: "columnar: both shear bands within 10 deg of the
+// vertical and traced to 90 % of the layer's height, or ...; else elliptical".
+std::string mechanism_shape_rule_text(const MechanismShapeRule& rule = {});
 
 }  // namespace trapdem

@@ -5,6 +5,8 @@
 
 #include <fmt/format.h>
 
+#include "analysis/mechanism_shape.hpp"
+
 namespace trapdem {
 
 namespace {
@@ -32,9 +34,7 @@ std::string describe_shapes(const std::vector<CaseSummary>& cases) {
     it->second.push_back(c.label);
   }
   const std::string missing = unknown.empty() ? "" : fmt::format(" (Not measured in {}.)", join_labels(unknown));
-  const std::string rule =
-      "(columnar: both shear bands within 10 deg of the vertical and traced to 90 % of the layer's height, or the "
-      "zone's width at mid-height below 1.3 B; else elliptical)";
+  const std::string rule = fmt::format("({})", mechanism_shape_rule_text());
   if (groups.empty()) return "The shape of the zone of influence was not measured in any case.";
   if (groups.size() == 1)
     return fmt::format("The zone of influence is {} in every case{} {}.{}", groups[0].first,

@@ -5,6 +5,7 @@
 
 #include <fmt/format.h>
 
+#include "analysis/mechanism_shape.hpp"
 #include "analysis/sinkhole.hpp"
 
 namespace trapdem {
@@ -100,13 +101,13 @@ void mean_curve(const std::vector<std::vector<double>>& xs, const std::vector<st
 std::string combined_shape(const std::vector<CaseSummary>& replicates) {
   std::size_t columnar = 0, known = 0;
   for (const CaseSummary& r : replicates) {
-    if (r.shape.empty() || r.shape == "unknown") continue;
+    if (r.shape.empty() || r.shape == mechanism_shape_name(MechanismShape::unknown)) continue;
     ++known;
-    if (r.shape == "columnar") ++columnar;
+    if (r.shape == mechanism_shape_name(MechanismShape::columnar)) ++columnar;
   }
-  if (known == 0) return "unknown";
-  if (columnar == 0) return "elliptical";
-  if (columnar == known) return "columnar";
+  if (known == 0) return mechanism_shape_name(MechanismShape::unknown);
+  if (columnar == 0) return mechanism_shape_name(MechanismShape::elliptical);
+  if (columnar == known) return mechanism_shape_name(MechanismShape::columnar);
   return fmt::format("mixed ({} of {} columnar)", columnar, known);
 }
 
