@@ -192,9 +192,8 @@ Json metrics_json(const AnalysisResult& r) {
     at_fractions.push_back(one);
   }
   zone.set("at_higher_thresholds", at_fractions);
-  const MechanismShapeResult shape = classify_mechanism_shape(r.bands, r.zone);
-  zone.set("shape", mechanism_shape_name(shape.shape));
-  zone.set("shape_from", mechanism_shape_basis_name(shape.basis));
+  zone.set("shape", mechanism_shape_name(r.shape.shape));
+  zone.set("shape_from", mechanism_shape_basis_name(r.shape.basis));
   const double travel = r.trapdoor_travel();
   Json wall = Json::object();
   wall.set("warning", r.zone.wall_warning);
@@ -403,10 +402,9 @@ std::string metrics_table(const AnalysisResult& r) {
   for (const auto& w : r.zone.widths) {
     s += fmt::format(", at {} mm {} mm", num(w.height * 1e3, "{:.0f}"), num(w.width * 1e3, "{:.1f}"));
   }
-  const MechanismShapeResult shape = classify_mechanism_shape(r.bands, r.zone);
   s += fmt::format("; shape ratio {} (mid-height width / B); {}{}\n", num(r.zone.shape_ratio, "{:.2f}"),
-                   mechanism_shape_name(shape.shape),
-                   shape.basis == MechanismShapeBasis::bands ? " (both bands vertical to the surface)" : "");
+                   mechanism_shape_name(r.shape.shape),
+                   r.shape.basis == MechanismShapeBasis::bands ? " (both bands vertical to the surface)" : "");
   if (const std::string text = side_wall_warning_text(r); !text.empty()) s += "  WARNING: " + text + "\n";
   for (const std::string& text : r.unmatched_ids) s += "  WARNING: " + text + "\n";
   return s;

@@ -208,6 +208,7 @@ AnalysisResult analyze_frames(const std::vector<AnalysisFrame>& frames, const Sp
   settings.zone.mean_diameter = r.mean_diameter;
   settings.zone.trapdoor_displacement = r.trapdoor_travel();
   r.zone = zone_of_influence(r.points, geometry.trapdoor, settings.zone);
+  r.shape = classify_mechanism_shape(r.bands, r.zone);
   for (const double fraction : kZoneFractions) {
     ZoneOfInfluenceSettings at = settings.zone;
     at.settlement_fraction = fraction;

@@ -16,6 +16,7 @@
 
 #include "analysis/grid_field.hpp"
 #include "analysis/incremental_strain.hpp"
+#include "analysis/mechanism_shape.hpp"
 #include "analysis/point_set.hpp"
 #include "analysis/shear_bands.hpp"
 #include "analysis/trapdoor_geometry.hpp"
@@ -107,6 +108,7 @@ struct AnalysisResult {
   std::vector<double> gamma_max_smoothed;
   ShearBandPair bands;
   ZoneOfInfluence zone;
+  MechanismShapeResult shape;  // columnar or elliptical, from the bands or the zone's width
   // The zone at higher thresholds (10, 25 and 50 % of the travel): how its width depends on the
   // threshold (a referee's first question of a 5 % zone; issue 36).
   std::vector<ZoneOfInfluence> zone_at_fractions;

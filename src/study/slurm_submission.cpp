@@ -43,10 +43,6 @@ std::string submit(const std::vector<std::string>& argv, const std::string& what
   return parsable_job_id(r.output);
 }
 
-std::string run_title(const StudyCase& c, const CaseRun& run) {
-  return run.replicate ? fmt::format("{} seed {}", c.name, run.seed) : c.name;
-}
-
 }  // namespace
 
 std::string parsable_job_id(const std::string& output) {

@@ -75,11 +75,11 @@ std::string resolved_recipe(const ConfigRecipe& recipe, const fs::path& presets,
   }
 }
 
-std::string run_title(const StudyCase& c, const CaseRun& run) {
-  return run.replicate ? fmt::format("{} seed {}", c.name, run.seed) : c.name;
-}
-
 }  // namespace
+
+std::string run_title(const StudyCase& study_case, const CaseRun& run) {
+  return run.replicate ? fmt::format("{} seed {}", study_case.name, run.seed) : study_case.name;
+}
 
 void log_study_line(const fs::path& out, const std::string& line, bool quiet, const LineSink& terminal) {
   if (!quiet) terminal.say(line);

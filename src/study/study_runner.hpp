@@ -44,6 +44,9 @@ struct CaseRun {
   ConfigRecipe recipe;                 // case_recipe, then pluviation.seed for a replicate
   std::string resolved;                // the recipe's resolved configuration (TOML), read and checked once
 };
+// The run's name in logs and job titles: the case's, with its packing seed for a replicate.
+std::string run_title(const StudyCase& study_case, const CaseRun& run);
+
 // The case's runs in seed order, each with its configuration resolved once (the case's own seed's
 // serves a case without replicates). Throws InputError naming the case if its configuration does
 // not validate.
