@@ -83,6 +83,7 @@ std::uint32_t collect_touching_in(PairCursor& at, std::size_t end, const Vec3* _
   const std::uint32_t no_history = lists.no_history;
   std::uint32_t next = next_contact;
   std::uint32_t count = 0;
+  batch.history_out = next;
   for (std::size_t i = at.owner; i < end; ++i) {
     const Vec3 xi = x[i];
     const double ri = r[i];
@@ -106,7 +107,6 @@ std::uint32_t collect_touching_in(PairCursor& at, std::size_t end, const Vec3* _
       batch.owner[count] = std::uint32_t(i);
       batch.partner[count] = j;
       batch.history_in[count] = last_step == kNoContact ? no_history : last_step;
-      batch.history_out[count] = next;
       batch.separation[0][count] = d.x;
       batch.separation[1][count] = d.y;
       batch.separation[2][count] = d.z;
@@ -154,7 +154,7 @@ void add_batch_shares(const ContactBatch& __restrict batch, std::uint32_t count,
       sums = {i, Vec3{}, Vec3{}};
     }
     max_overlap = std::max(max_overlap, batch.overlap_ratio[q]);
-    const std::uint32_t out = batch.history_out[q];
+    const std::uint32_t out = batch.history_out + q;
     history.tangential[out] = {{batch.spring[0][q], batch.spring[1][q], batch.spring[2][q]}, batch.flags[q]};
     if (history.rolling)  // the same for every pair (the law's choice): predicted
       history.rolling[out] = {batch.rolling_spring[0][q], batch.rolling_spring[1][q], batch.rolling_spring[2][q]};

@@ -20,7 +20,9 @@ struct ContactBatch {
   alignas(64) std::uint32_t owner[kCapacity];
   alignas(64) std::uint32_t partner[kCapacity];
   alignas(64) std::uint32_t history_in[kCapacity];   // index of the pair's history of the last step
-  alignas(64) std::uint32_t history_out[kCapacity];  // where this step's goes
+  // Where contact q's history of this step goes: history_out + q (the touching pairs' histories
+  // are written in pair order, one after the other).
+  std::uint32_t history_out = 0;
   alignas(64) double separation[3][kCapacity];  // m, x_owner - x_partner (minimum image)
   alignas(64) double overlap_ratio[kCapacity];  // overlap / smaller radius
   alignas(64) double force[3][kCapacity];       // N, on the owner
