@@ -301,11 +301,11 @@ TEST(StudyDefinition, ThePaperReplicatesArePaperTable2sPaperFastCasesWithSeedsTw
 // The shape study (issue 39): three materials at one scale, each a valid run configuration; the
 // beads and the rolling case are paper-table2's Calibrated and RF3 at the demo scale, the dimers
 // the same box and law but for their shape, mu 0.5 and no rolling resistance.
-TEST(StudyDefinition, TheShapeStudyIsBeadsRollingResistanceAndDimersInOneBox) {
+TEST(StudyDefinition, TheShapeStudyIsBeadsTwoRollingResistancesAndDimersInOneBox) {
   const fs::path studies = fs::path(TRAPDEM_SOURCE_DIR) / "studies";
   const StudyDefinition shape = load_study(studies / "shape.toml");
   const StudyDefinition table2 = load_study(studies / "paper-table2.toml");
-  ASSERT_EQ(shape.cases.size(), 3u);
+  ASSERT_EQ(shape.cases.size(), 4u);
   for (const StudyScale& scale : shape.scales) {
     for (const StudyCase& c : shape.cases) {
       Config config = Config::parse(resolved_case_configuration(c, scale, app::preset_directory()), c.name);
@@ -318,14 +318,20 @@ TEST(StudyDefinition, TheShapeStudyIsBeadsRollingResistanceAndDimersInOneBox) {
   auto resolved = [&](const StudyDefinition& s, std::size_t k, const StudyScale& scale) {
     return Config::parse(resolved_case_configuration(s.cases[k], scale, app::preset_directory()), "study");
   };
-  Config beads = resolved(shape, 0, demo), rolling = resolved(shape, 1, demo), dimers = resolved(shape, 2, demo);
-  Config calibrated = resolved(table2, 0, table2.scale("demo")), rf3 = resolved(table2, 3, table2.scale("demo"));
+  Config beads = resolved(shape, 0, demo), rolling = resolved(shape, 1, demo), rolling_epsd = resolved(shape, 2, demo),
+         dimers = resolved(shape, 3, demo);
+  Config calibrated = resolved(table2, 0, table2.scale("demo")), rf1 = resolved(table2, 1, table2.scale("demo")),
+         rf3 = resolved(table2, 3, table2.scale("demo"));
   for (const char* key : {"contact.static_friction", "contact.kinetic_friction", "contact.rolling_friction",
                           "contact.rolling_model", "contact.normal_stiffness", "box.width", "pluviation.count",
                           "particles.min_diameter", "trapdoor.travel"}) {
     EXPECT_EQ(beads.require_value_text(key), calibrated.require_value_text(key)) << key;
     EXPECT_EQ(rolling.require_value_text(key), rf3.require_value_text(key)) << key;
+    // RF1's friction with the rolling spring that holds its torque at rest (issue 36's model).
+    if (std::string(key) != "contact.rolling_model")
+      EXPECT_EQ(rolling_epsd.require_value_text(key), rf1.require_value_text(key)) << key;
   }
+  EXPECT_EQ(rolling_epsd.require_value_text("contact.rolling_model"), "\"elastic_plastic\"");
   EXPECT_EQ(dimers.require_value_text("contact.kinetic_friction"), "0.5");
   EXPECT_EQ(dimers.require_value_text("contact.rolling_friction"), "0.0");
   for (const char* key : {"contact.normal_stiffness", "contact.restitution", "box.width", "box.depth",
