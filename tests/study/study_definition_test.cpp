@@ -298,9 +298,10 @@ TEST(StudyDefinition, ThePaperReplicatesArePaperTable2sPaperFastCasesWithSeedsTw
   }
 }
 
-// The shape study (issue 39): three materials at one scale, each a valid run configuration; the
-// beads and the rolling case are paper-table2's Calibrated and RF3 at the demo scale, the dimers
-// the same box and law but for their shape, mu 0.5 and no rolling resistance.
+// The shape study (issue 39): four materials at one scale, each a valid run configuration; the
+// beads and the rolling case are paper-table2's Calibrated and RF3 at the demo scale, rolling-epsd
+// RF1 there with the elastic_plastic rolling model, the dimers the same box and law but for their
+// shape, mu 0.5 and no rolling resistance.
 TEST(StudyDefinition, TheShapeStudyIsBeadsTwoRollingResistancesAndDimersInOneBox) {
   const fs::path studies = fs::path(TRAPDEM_SOURCE_DIR) / "studies";
   const StudyDefinition shape = load_study(studies / "shape.toml");
