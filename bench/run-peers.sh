@@ -40,10 +40,13 @@ for key in sorted({(r['code'], r['N_box_W'], r['np']) for r in rows}, key=lambda
     rate = n * int(g[0]['steps']) / loop / 1e6
     peer[(names.get(key[0], key[0]), n, key[2])] = (rate, g[0]['contacts_per_particle'], len(g))
 ours = {}
+host = ""
 for line in open(f"{data}/trapdem_medians.txt"):
+    if line.startswith("# trapdem ") and not host: host = line.strip()
     m = re.match(r'trapdem N=(\d+) threads=(\d+) Mpsteps/s=([0-9.eE+-]+)', line)
     if m: ours[(int(m.group(1)), m.group(2))] = float(m.group(3))
 print("# median Mpsteps/s (particle-steps per second / 1e6); peers: contacts/particle, repetitions")
+if host: print(host)
 for (n, t), r in sorted(ours.items()):
     print(f"trapdem N={n} threads={t} Mpsteps/s={r:.3f}")
     for code in sorted({k[0] for k in peer}):

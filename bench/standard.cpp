@@ -26,6 +26,7 @@
 #include <exception>
 #include <string>
 
+#include "core/build_info.hpp"
 #include "core/errors.hpp"
 #include "dem/simulation.hpp"
 #include "io/lammps_data.hpp"
@@ -134,6 +135,8 @@ int run(const Options& o) {
               seconds, o.steps, o.warmup, contacts_per_particle,
               static_cast<long long>(sim.stats().rebuilds - rebuilds0), sim.stats().rebuild_seconds - rebuild_seconds0,
               100.0 * max_overlap, ke0, sim.kinetic_energy(), o.skin, listed_per_particle);
+  // The code and the CPU each figure belongs to (bench/RESULTS.md names both for every result).
+  std::printf("# trapdem %s, on %s\n", describe_build().c_str(), describe_cpu().c_str());
   if (!o.write.empty()) {
     LammpsWriteOptions w;
     w.title = "trapdem bench bed: " + std::to_string(o.tile) + " x " + o.data + ", settled " +

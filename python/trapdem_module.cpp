@@ -15,6 +15,7 @@
 
 #include "analysis/analysis_output.hpp"
 #include "analysis/field_history.hpp"
+#include "core/build_info.hpp"
 #include "core/errors.hpp"
 #include "experiment/folder_run.hpp"
 #include "piv/piv_folder.hpp"
@@ -358,6 +359,15 @@ PYBIND11_MODULE(_trapdem, m) {
         py::arg("reference"), py::arg("view"), py::arg("max_strain"));
   m.def("study", &study, py::arg("file"), py::arg("scale"), py::arg("out"), py::arg("presets"), py::arg("threads"),
         py::arg("quiet"), py::arg("report_only"), py::arg("stop_after_seconds"), py::arg("cases"), py::arg("seeds"));
+  m.def("build_info", [] {
+    const BuildInfo& build = trapdem::build_info();
+    py::dict d;
+    d["commit"] = std::string(build.commit);
+    d["modified"] = build.modified;
+    d["description"] = describe_build();
+    d["cpu"] = describe_cpu();
+    return d;
+  });
   m.def("synth", &synth, py::arg("field"), py::arg("out"), py::arg("width"), py::arg("height"), py::arg("images"),
         py::arg("noise"), py::arg("magnitude"), py::arg("seed"));
 }

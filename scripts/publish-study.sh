@@ -11,8 +11,9 @@
 #
 # --finished-only: runs whose run.json does not say "complete": true are left out.
 # --figures: each run's analysis figures too (analysis/*.png, .svg, .pdf: ~1 MB a run), for runs
-#   whose snapshots will not outlive their machine: the report draws no figure of a run without
-#   them (docs/study.md), so these are then the only pictures of it.
+#   whose snapshots will not outlive their machine: without them the report draws such a run only
+#   in its strain panel, from field_history.h5 (docs/study.md), so these are then its only full
+#   pictures.
 # The checkout's absolute path in the copied text files (a packing's `from`, the configuration's
 # path in resolved.toml and run.log) is written `<checkout>/`: what is published names no machine.
 # DEST_DIR's files are replaced one by one (a file that is no longer in the study stays: remove

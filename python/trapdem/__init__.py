@@ -25,7 +25,7 @@ from ._trapdem import FileError, InputError, SimulationError
 
 __all__ = [
     "InputError", "FileError", "SimulationError", "run", "resume", "RunFolder", "Analysis", "analyze",
-    "element", "study", "piv", "synth", "presets", "preset_path", "to_toml",
+    "element", "study", "piv", "synth", "presets", "preset_path", "to_toml", "build_info",
 ]
 
 _HERE = pathlib.Path(__file__).resolve().parent
@@ -250,6 +250,14 @@ def analyze(folder, *, at: str = "", reference: str = "0mm", view: str = "front"
     `write` its files go to FOLDER/analysis (with the figures if `figures`), as the program's."""
     return Analysis(_trapdem.analyze(str(pathlib.Path(folder)), at, reference, view, incremental, smoothing, write,
                                      figures, format))
+
+
+def build_info() -> dict:
+    """The code this module was built from and the host it runs on, as each run's run.json records
+    them: `commit` (the full hash; empty outside a git checkout), `modified` (tracked files differed
+    from it when built), `description` ("7a62e4e1c2d3", "... with uncommitted changes") and `cpu`
+    (/proc/cpuinfo's name with family, model and AVX-512 or AVX2)."""
+    return _trapdem.build_info()
 
 
 def field_history(path) -> dict:

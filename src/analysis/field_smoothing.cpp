@@ -2,16 +2,26 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstddef>
+#include <vector>
 #include <fmt/format.h>
 
 #include "core/errors.hpp"
 
 namespace trapdem {
 
-TriangleField smooth_triangle_field(const TriangleField& field, double length) {
+namespace {
+
+void check_smoothing_length(double length) {
   if (!(length >= 0.0) || !std::isfinite(length)) {
     throw InputError(fmt::format("strain smoothing length {} m: expected a finite length >= 0", length));
   }
+}
+
+}  // namespace
+
+TriangleField smooth_triangle_field(const TriangleField& field, double length) {
+  check_smoothing_length(length);
   if (length == 0.0 || field.size() == 0) return field;
   // Buckets of one cut-off radius (3 L): a triangle's neighbours lie in the 3 x 3 buckets around it.
   const double reach = 3.0 * length;
@@ -64,6 +74,46 @@ TriangleField smooth_triangle_field(const TriangleField& field, double length) {
     }
     smoothed.value[t] = sum_wv / sum_w;  // sum_w > 0: the triangle itself is within reach
   }
+  return smoothed;
+}
+
+GridField smooth_grid_field(const GridField& field, double length) {
+  check_smoothing_length(length);
+  const GridSpec& g = field.grid;
+  if (length == 0.0 || field.value.empty() || !(g.spacing > 0.0)) return field;
+  // The kernel's weights on the node offsets within 3 L (the triangle smoothing's cut-off).
+  const double reach = 3.0 * length;
+  // Nodes at exactly 3 L count, as the triangles' do (reach / spacing is often a whole number that
+  // the division leaves a rounding below it).
+  const double slack = 1.0 + 1e-12;
+  const auto half = static_cast<std::ptrdiff_t>(std::floor(reach / g.spacing * slack));
+  const double inv_two_var = 1.0 / (2.0 * length * length);
+  struct Offset {
+    std::ptrdiff_t di, dj;
+    double weight;
+  };
+  std::vector<Offset> kernel;
+  for (std::ptrdiff_t dj = -half; dj <= half; ++dj)
+    for (std::ptrdiff_t di = -half; di <= half; ++di) {
+      const double r2 = static_cast<double>(di * di + dj * dj) * g.spacing * g.spacing;
+      if (r2 <= reach * reach * slack) kernel.push_back({di, dj, std::exp(-r2 * inv_two_var)});
+    }
+  GridField smoothed = field;
+  const auto nx = static_cast<std::ptrdiff_t>(g.nx), nz = static_cast<std::ptrdiff_t>(g.nz);
+  for (std::ptrdiff_t j = 0; j < nz; ++j)
+    for (std::ptrdiff_t i = 0; i < nx; ++i) {
+      if (!std::isfinite(field.value[static_cast<std::size_t>(j * nx + i)])) continue;
+      double sum_w = 0.0, sum_wv = 0.0;
+      for (const Offset& o : kernel) {
+        const std::ptrdiff_t ii = i + o.di, jj = j + o.dj;
+        if (ii < 0 || jj < 0 || ii >= nx || jj >= nz) continue;
+        const double v = field.value[static_cast<std::size_t>(jj * nx + ii)];
+        if (!std::isfinite(v)) continue;
+        sum_w += o.weight;
+        sum_wv += o.weight * v;
+      }
+      smoothed.value[static_cast<std::size_t>(j * nx + i)] = sum_wv / sum_w;  // the node itself has weight 1
+    }
   return smoothed;
 }
 

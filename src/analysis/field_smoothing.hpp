@@ -5,6 +5,7 @@
 // a few diameters; averaging over a Gaussian of standard deviation L (a few d) suppresses that
 // fluctuation while a shear band of full width W (~5-10 d) survives, widened to about
 // sqrt(W^2 + (2.355 L)^2). The shear-band tracer and the smoothed strain figure read this field.
+#include "analysis/grid_field.hpp"
 #include "analysis/horizontal_profile.hpp"
 
 namespace trapdem {
@@ -15,5 +16,13 @@ namespace trapdem {
 // A triangle whose value is NaN keeps NaN. length = 0 returns the field unchanged.
 // Throws InputError if length is negative or not finite.
 TriangleField smooth_triangle_field(const TriangleField& field, double length);
+
+// The same Gaussian (truncated at 3 L) over a regular grid's nodes, each node weighted equally (a
+// grid of a per-triangle field samples each triangle in proportion to its area, so this is the
+// triangle smoothing's area weighting on the grid): the normalised convolution over the finite
+// nodes, NaN nodes kept NaN. It smooths a stored field (field_history.h5) as the analysis smoothed
+// the triangles it was sampled from. length = 0 returns the field unchanged. Throws InputError if
+// length is negative or not finite.
+GridField smooth_grid_field(const GridField& field, double length);
 
 }  // namespace trapdem

@@ -14,6 +14,7 @@
 
 #include <fmt/format.h>
 
+#include "core/build_info.hpp"
 #include "core/errors.hpp"
 #include "core/host_load.hpp"
 #include "core/wait_policy.hpp"
@@ -84,6 +85,7 @@ void describe_run(RunLog& recorder, const ExperimentConfig& c, const fs::path& o
     recorder.say(fmt::format("  from the packing {} ({}, {} particles, shift [{}, {}, {}] m): no pour, starting at {}",
                              c.packing.from, c.packing.format, c.packing.particles->size(), c.packing.shift.x,
                              c.packing.shift.y, c.packing.shift.z, c.packing.start_at_spin_up ? "spin-up" : "settling"));
+  recorder.say(fmt::format("  trapdem {}, on {}", describe_build(), describe_cpu()));
   recorder.say(fmt::format("  output in {}", out.string()));
 }
 
@@ -410,7 +412,8 @@ bool run_logged(const FolderRunOptions& o, std::optional<RunLog>& log) {
   on_root(ranks, [&] {
     per_second = record_run_segment(folder,
                                     RunSegment{complete, stage_name(experiment.stage()), seconds, sim.step_count(),
-                                               experiment.particle_steps_total(), particles},
+                                               experiment.particle_steps_total(), particles, omp_get_max_threads(),
+                                               ranks ? ranks->ranks() : 1},
                                     recorder.history());
   });
   recorder.say(fmt::format("{} after {} of wall clock: {} steps, {} particles, {:.2f} M particle-steps/s{}",

@@ -5,6 +5,7 @@
 
 #include <fmt/format.h>
 
+#include "core/build_info.hpp"
 #include "core/errors.hpp"
 #include "core/json.hpp"
 #include "io/atomic_file.hpp"
@@ -67,6 +68,13 @@ double record_run_segment(const RunFolder& folder, const RunSegment& s, const Ru
   j.set("particles", s.particles);
   const double per_second = total_seconds > 0.0 ? s.particle_steps / total_seconds : 0.0;
   j.set("particle_steps_per_second", per_second);
+  // This segment's code and host (an earlier segment's are in run.log's header lines).
+  const BuildInfo& build = build_info();
+  j.set("trapdem_commit", std::string(build.commit));
+  j.set("trapdem_modified", build.modified);
+  j.set("cpu", describe_cpu());
+  j.set("threads", s.threads);
+  j.set("ranks", s.ranks);
   write_text_atomically(folder.run_json(), j.dump() + "\n");
   return per_second;
 }

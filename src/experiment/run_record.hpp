@@ -20,6 +20,8 @@ struct RunSegment {
   std::int64_t steps = 0;      // engine steps of the run since its start (the engine's count)
   double particle_steps = 0.0; // particle-steps of the run since its start (the experiment's count)
   std::size_t particles = 0;   // at the segment's end
+  int threads = 1;             // OpenMP threads (per rank)
+  int ranks = 1;               // MPI ranks
 };
 
 // The run's wall clock and segments before the current segment. Counted to the checkpoint a
@@ -42,7 +44,9 @@ struct RunHistory {
   static RunHistory from_record(const RunFolder& folder);
 };
 
-// Writes the folder's run.json (atomically): the history plus the segment. Returns the
+// Writes the folder's run.json (atomically): the history plus the segment, with the code and the
+// host of the segment (its commit, the CPU, threads and ranks: what a timing or a result is traced
+// to; a run resumed by another build says so in run.log, each segment's header). Returns the
 // particle-steps per second it records (the run's work over its wall clock, all segments), for
 // the run's last line.
 double record_run_segment(const RunFolder& folder, const RunSegment& segment, const RunHistory& history = {});

@@ -44,6 +44,16 @@ Hdf5Handle file_access_list() {
   return fapl;
 }
 
+// A group's or dataset's creation properties without its modification time: HDF5 stamps each object
+// by default, so two writes of the same data differed in a few bytes; without it a file is a
+// function of its content (a re-analysis that changes nothing leaves a published file unchanged,
+// and byte comparisons of outputs mean what they say).
+Hdf5Handle untimed_creation_list(hid_t property_class) {
+  Hdf5Handle list(H5Pcreate(property_class));
+  H5Pset_obj_track_times(list.get(), false);
+  return list;
+}
+
 Hdf5Handle string_type() {
   Hdf5Handle type(H5Tcopy(H5T_C_S1));
   H5Tset_size(type.get(), H5T_VARIABLE);
@@ -73,7 +83,8 @@ void write_dataset(const Hdf5Group& g, std::string_view name, hid_t file_type, h
   hsize_t dims[2] = {rows, columns};
   Hdf5Handle space(H5Screate_simple(columns == 0 ? 1 : 2, dims, nullptr));
   if (!space.valid()) fail(g.describe(name), "cannot create the dataspace");
-  Hdf5Handle set(H5Dcreate2(g.id(), key.c_str(), file_type, space.get(), H5P_DEFAULT, H5P_DEFAULT, H5P_DEFAULT));
+  Hdf5Handle creation = untimed_creation_list(H5P_DATASET_CREATE);
+  Hdf5Handle set(H5Dcreate2(g.id(), key.c_str(), file_type, space.get(), H5P_DEFAULT, creation.get(), H5P_DEFAULT));
   if (!set.valid()) fail(g.describe(name), "cannot create the dataset");
   if (rows > 0 && H5Dwrite(set.get(), memory_type, H5S_ALL, H5S_ALL, H5P_DEFAULT, data) < 0)
     fail(g.describe(name), "cannot write the dataset");
@@ -261,7 +272,8 @@ bool Hdf5Group::has(std::string_view name) const {
 
 Hdf5Group Hdf5Group::create_group(std::string_view name) const {
   const std::string key(name);
-  Hdf5Handle g(H5Gcreate2(id(), key.c_str(), H5P_DEFAULT, H5P_DEFAULT, H5P_DEFAULT));
+  Hdf5Handle creation = untimed_creation_list(H5P_GROUP_CREATE);
+  Hdf5Handle g(H5Gcreate2(id(), key.c_str(), H5P_DEFAULT, creation.get(), H5P_DEFAULT));
   if (!g.valid()) fail(describe(name), "cannot create the group");
   return Hdf5Group(file_, child_path(name), std::move(g));
 }
@@ -360,7 +372,7 @@ void Hdf5Group::write_float_stack(std::string_view name, const FloatStack& stack
   const hsize_t dims[3] = {stack.layers, stack.rows, stack.columns};
   Hdf5Handle space(H5Screate_simple(3, dims, nullptr));
   if (!space.valid()) fail(describe(name), "cannot create the dataspace");
-  Hdf5Handle creation(H5Pcreate(H5P_DATASET_CREATE));
+  Hdf5Handle creation = untimed_creation_list(H5P_DATASET_CREATE);
   if (stack.value.size() > 0) {  // a chunk may not have a zero extent
     const hsize_t chunk[3] = {1, stack.rows, stack.columns};
     constexpr unsigned kDeflateLevel = 6;  // zlib's default: near its best ratio at a fraction of level 9's time

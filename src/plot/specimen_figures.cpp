@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <stdexcept>
 #include <fmt/format.h>
 
 #include "core/length_text.hpp"
@@ -47,10 +48,11 @@ Range1 z_range_mm(const AnalysisResult& r) {
   return {bottom * mm, (top + 0.5 * r.mean_diameter) * mm};
 }
 
-// Base on both sides of the trapdoor (at z = 0) and the trapdoor at its current position.
-void draw_base_and_trapdoor(cairo_t* cr, const PlotFrame& f, const AnalysisResult& r) {
-  const TrapdoorGeometry& t = r.geometry.trapdoor;
-  const double z0 = f.py(0.0), zt = f.py(-r.trapdoor_travel() * mm);
+// Base on both sides of the trapdoor (at z = 0) and the trapdoor at its current position (travel
+// and box width in m).
+void draw_base_and_trapdoor(cairo_t* cr, const PlotFrame& f, const TrapdoorGeometry& t, double travel,
+                            double box_width) {
+  const double z0 = f.py(0.0), zt = f.py(-travel * mm);
   cairo_save(cr);
   cairo_set_line_cap(cr, CAIRO_LINE_CAP_BUTT);
   cairo_set_source_rgb(cr, 0.25, 0.25, 0.25);
@@ -58,7 +60,7 @@ void draw_base_and_trapdoor(cairo_t* cr, const PlotFrame& f, const AnalysisResul
   cairo_move_to(cr, f.px(0.0), z0 + 2.0);
   cairo_line_to(cr, f.px(t.left_edge() * mm), z0 + 2.0);
   cairo_move_to(cr, f.px(t.right_edge() * mm), z0 + 2.0);
-  cairo_line_to(cr, f.px(r.geometry.box_width * mm), z0 + 2.0);
+  cairo_line_to(cr, f.px(box_width * mm), z0 + 2.0);
   cairo_stroke(cr);
   // cavity walls
   cairo_set_line_width(cr, 1.5);
@@ -76,6 +78,10 @@ void draw_base_and_trapdoor(cairo_t* cr, const PlotFrame& f, const AnalysisResul
   cairo_line_to(cr, f.px(t.right_edge() * mm) - 2, zt + 2.0);
   cairo_stroke(cr);
   cairo_restore(cr);
+}
+
+void draw_base_and_trapdoor(cairo_t* cr, const PlotFrame& f, const AnalysisResult& r) {
+  draw_base_and_trapdoor(cr, f, r.geometry.trapdoor, r.trapdoor_travel(), r.geometry.box_width);
 }
 
 // The plot area for a box map in `space`, leaving `left` and `bottom` units for the axes.
@@ -105,30 +111,41 @@ std::string view_text(const AnalysisResult& r) {
   return fmt::format("{} particles within {} of the glass", r.id.size(), format_mm(r.settings.front_depth));
 }
 
+// A band's trace: white halo, then a dashed line (bands magenta, their branches orange, thinner).
+void stroke_trace(cairo_t* cr, const PlotFrame& f, const std::vector<BandTracePoint>& trace, bool branch) {
+  if (trace.size() < 2) return;
+  const double width = branch ? 1.3 : 1.8;
+  const Rgb colour = branch ? Rgb{1.0, 0.55, 0.0} : Rgb{0.9, 0.1, 0.5};
+  for (int pass = 0; pass < 2; ++pass) {
+    cairo_set_line_width(cr, pass == 0 ? width + 1.5 : width);
+    if (pass == 0) cairo_set_source_rgba(cr, 1, 1, 1, 0.8);
+    else set_colour(cr, colour);
+    const double dash[] = {5.0, 3.0};
+    cairo_set_dash(cr, dash, pass == 0 ? 0 : 2, 0.0);
+    for (std::size_t k = 0; k < trace.size(); ++k) {
+      const double x = f.px(trace[k].x * mm), y = f.py(trace[k].z * mm);
+      if (k == 0) cairo_move_to(cr, x, y);
+      else cairo_line_to(cr, x, y);
+    }
+    cairo_stroke(cr);
+  }
+}
+
 void draw_band_traces(cairo_t* cr, const PlotFrame& f, const AnalysisResult& r) {
   cairo_save(cr);
   f.clip(cr);
-  // A band's trace: white halo, then a dashed line (bands magenta, their branches orange, thinner).
-  const auto stroke_trace = [&](const std::vector<BandTracePoint>& trace, double width, Rgb colour) {
-    if (trace.size() < 2) return;
-    for (int pass = 0; pass < 2; ++pass) {
-      cairo_set_line_width(cr, pass == 0 ? width + 1.5 : width);
-      if (pass == 0) cairo_set_source_rgba(cr, 1, 1, 1, 0.8);
-      else set_colour(cr, colour);
-      const double dash[] = {5.0, 3.0};
-      cairo_set_dash(cr, dash, pass == 0 ? 0 : 2, 0.0);
-      for (std::size_t k = 0; k < trace.size(); ++k) {
-        const double x = f.px(trace[k].x * mm), y = f.py(trace[k].z * mm);
-        if (k == 0) cairo_move_to(cr, x, y);
-        else cairo_line_to(cr, x, y);
-      }
-      cairo_stroke(cr);
-    }
-  };
   for (const ShearBand* band : {&r.bands.left, &r.bands.right}) {
-    stroke_trace(band->trace, 1.8, {0.9, 0.1, 0.5});
-    for (const auto& branch : band->branches) stroke_trace(branch.trace, 1.3, {1.0, 0.55, 0.0});
+    stroke_trace(cr, f, band->trace, false);
+    for (const auto& branch : band->branches) stroke_trace(cr, f, branch.trace, true);
   }
+  cairo_restore(cr);
+}
+
+void draw_band_traces(cairo_t* cr, const PlotFrame& f, const StoredStrainMap& m) {
+  cairo_save(cr);
+  f.clip(cr);
+  for (const auto& trace : m.band_traces) stroke_trace(cr, f, trace, false);
+  for (const auto& trace : m.branch_traces) stroke_trace(cr, f, trace, true);
   cairo_restore(cr);
 }
 
@@ -187,6 +204,60 @@ void fill_triangles(cairo_t* cr, const PlotFrame& f, const AnalysisResult& r, co
   cairo_restore(cr);
 }
 
+// Fills each finite node's cell (one grid spacing square, centred on the node) with its value's
+// colour; the rest stays light grey (empty space), as around the triangles.
+template <class Colour>
+void fill_grid(cairo_t* cr, const PlotFrame& f, const StoredStrainMap& m, Colour colour) {
+  cairo_save(cr);
+  f.clip(cr);
+  cairo_set_source_rgb(cr, 0.93, 0.93, 0.93);
+  cairo_paint(cr);
+  cairo_set_antialias(cr, CAIRO_ANTIALIAS_NONE);
+  const GridSpec& g = m.gamma_max.grid;
+  const double half = 0.5 * g.spacing;
+  for (std::size_t j = 0; j < g.nz; ++j)
+    for (std::size_t i = 0; i < g.nx; ++i) {
+      const double v = m.gamma_max.at(i, j);
+      if (!std::isfinite(v)) continue;
+      const double x0 = f.px((g.x(i) - half) * mm), x1 = f.px((g.x(i) + half) * mm);
+      const double z0 = f.py((g.z(j) - half) * mm), z1 = f.py((g.z(j) + half) * mm);
+      set_colour(cr, colour(v));
+      cairo_rectangle(cr, std::min(x0, x1), std::min(z0, z1), std::fabs(x1 - x0) + 0.5, std::fabs(z1 - z0) + 0.5);
+      cairo_fill(cr);  // the half unit of overlap closes hairline seams between cells
+    }
+  cairo_set_antialias(cr, CAIRO_ANTIALIAS_DEFAULT);
+  draw_base_and_trapdoor(cr, f, m.trapdoor, m.travel, m.box_width);
+  cairo_restore(cr);
+}
+
+// A panel map's extent and captions, whichever its source.
+Range1 x_range_mm(const StrainPanelMap& m) {
+  return m.analysis ? x_range_mm(*m.analysis) : Range1{0.0, m.stored->box_width * mm};
+}
+Range1 z_range_mm(const StrainPanelMap& m) {
+  if (m.analysis) return z_range_mm(*m.analysis);
+  const StoredStrainMap& s = *m.stored;
+  const GridSpec& g = s.gamma_max.grid;
+  double top = 0.0;  // m, the top of the highest covered cell
+  for (std::size_t j = 0; j < g.nz; ++j)
+    for (std::size_t i = 0; i < g.nx; ++i)
+      if (std::isfinite(s.gamma_max.at(i, j))) top = std::max(top, g.z(j) + 0.5 * g.spacing);
+  const double bottom = -(s.travel + 0.5 * s.mean_diameter + 0.02 * top);
+  return {bottom * mm, (top + 0.5 * s.mean_diameter) * mm};
+}
+std::string short_displacement_text(const StrainPanelMap& m) {
+  if (m.analysis) return short_displacement_text(*m.analysis);
+  return fmt::format("δ = {}, δ/B = {:.2f}, stored grid", format_mm(m.stored->travel),
+                     m.stored->travel / m.stored->trapdoor.width);
+}
+const std::string& map_name(const StrainPanelMap& m) { return m.analysis ? m.analysis->geometry.name : m.stored->name; }
+// The panel's title says whether the maps are smoothed, and at what length: the first map's.
+double shown_smoothing_diameters(const StrainPanelMap& m) {
+  if (m.analysis)
+    return shows_smoothed(*m.analysis, StrainKind::total) ? m.analysis->settings.bands.smoothing_diameters : 0.0;
+  return m.stored->smoothing_diameters;
+}
+
 // For a map's caption: what the filter dropped and how the map shows it.
 std::string dropped_triangles_text(const AnalysisResult& r, const std::vector<double>& values) {
   const std::size_t dropped = r.mesh.dropped_long_edge + r.mesh.dropped_sliver;
@@ -238,6 +309,8 @@ ColourBarStyle bar_style(std::string label, double tick_scale = 1.0, bool extend
 double auto_strain_scale(const AnalysisResult& r, StrainKind kind) {
   return nice_ceiling(quantile(strain_values(r, kind), 0.95));
 }
+
+double auto_strain_scale(const StoredStrainMap& m) { return nice_ceiling(quantile(m.gamma_max.value, 0.95)); }
 
 std::vector<double> shown_volumetric_strain(const AnalysisResult& r) {
   const double length = r.settings.bands.smoothing_diameters * r.mean_diameter;
@@ -394,13 +467,17 @@ PlotFrame write_particles_figure(const std::filesystem::path& path, const Analys
   return f;
 }
 
-std::vector<PlotFrame> write_strain_panel(const std::filesystem::path& path,
-                                          const std::vector<const AnalysisResult*>& results,
-                                          const std::vector<std::string>& labels, double vmax) {
+std::vector<PlotFrame> write_strain_panel_of_maps(const std::filesystem::path& path,
+                                                  const std::vector<StrainPanelMap>& results,
+                                                  const std::vector<std::string>& labels, double vmax) {
   std::vector<PlotFrame> frames;
   if (results.empty()) return frames;
+  for (const StrainPanelMap& m : results)
+    if ((m.analysis == nullptr) == (m.stored == nullptr))
+      throw std::invalid_argument("write_strain_panel_of_maps: each map is an analysis or a stored map, not both or neither");
   if (!(vmax > 0.0)) {
-    for (const auto* r : results) vmax = std::max(vmax, auto_strain_scale(*r));
+    for (const StrainPanelMap& m : results)
+      vmax = std::max(vmax, m.analysis ? auto_strain_scale(*m.analysis) : auto_strain_scale(*m.stored));
   }
   const std::size_t n = results.size();
   const std::size_t columns = n <= 4 ? 1 : 2;
@@ -410,9 +487,9 @@ std::vector<PlotFrame> write_strain_panel(const std::filesystem::path& path,
   const double width = columns * cell_w + kRightMargin;
   // One length scale: the widest box fills its cell; one vertical range: the union of the runs'.
   double widest = 0.0, z_lo = 0.0, z_hi = 0.0;
-  for (const auto* r : results) {
-    widest = std::max(widest, x_range_mm(*r).span());
-    const Range1 z = z_range_mm(*r);
+  for (const StrainPanelMap& r : results) {
+    widest = std::max(widest, x_range_mm(r).span());
+    const Range1 z = z_range_mm(r);
     z_lo = std::min(z_lo, z.lo), z_hi = std::max(z_hi, z.hi);
   }
   const double units_per_mm = (cell_w - left - 8.0) / widest;
@@ -424,32 +501,35 @@ std::vector<PlotFrame> write_strain_panel(const std::filesystem::path& path,
   std::vector<std::vector<std::string>> label_lines;
   std::size_t most_lines = 1;
   for (std::size_t k = 0; k < n; ++k) {
-    const std::string name = k < labels.size() && !labels[k].empty() ? labels[k] : results[k]->geometry.name;
+    const std::string name = k < labels.size() && !labels[k].empty() ? labels[k] : map_name(results[k]);
     label_lines.push_back(wrap_text(fmt::format("({}) {}", static_cast<char>('a' + k % 26), name), label_style, cell_w - 8.0));
     most_lines = std::max(most_lines, label_lines.back().size());
   }
   const double label_h = 2.6 * font + (most_lines - 1) * label_line;
   // The x axis title under the last row only (every panel has the same x scale).
   const double cell_h = label_h + plot_h + bottom - 1.5 * font + 6.0;
-  const bool smoothed = shows_smoothed(*results.front(), StrainKind::total);
+  const double smoothing = shown_smoothing_diameters(results.front());
   const std::string title = fmt::format("Maximum shear strain γmax (total{}), one colour and length scale",
-                                        smoothed ? fmt::format(", smoothed over {:g} d",
-                                                               results.front()->settings.bands.smoothing_diameters)
-                                                 : std::string());
+                                        smoothing > 0.0 ? fmt::format(", smoothed over {:g} d", smoothing) : std::string());
   const double top = 10.0 + title_height(title, "", kFontTitle, width - 20.0) + 4.0;
   Canvas canvas(static_cast<int>(std::ceil(width)), static_cast<int>(std::ceil(top + rows * cell_h + 1.5 * font)));
   canvas.set_title(title);
   cairo_t* cr = canvas.cr();
   draw_title(cr, 10.0, 10.0, title, "", kFontTitle, width - 20.0);
   for (std::size_t k = 0; k < n; ++k) {
-    const AnalysisResult& r = *results[k];
+    const StrainPanelMap& r = results[k];
     const double cell_x = (k % columns) * cell_w, cell_y = top + (k / columns) * cell_h;
     const Range1 x = x_range_mm(r), z{z_lo, z_hi};
     const PlotFrame f({cell_x + left, cell_y + label_h, x.span() * units_per_mm, plot_h}, x, z);
     const ColourMap map(ColourMapKind::viridis);
-    const auto& values = strain_values(r, StrainKind::total);
-    fill_triangles(cr, f, r, values, [&](double v) { return map.of(v, 0.0, vmax); });
-    draw_band_traces(cr, f, r);
+    const auto colour = [&](double v) { return map.of(v, 0.0, vmax); };
+    if (r.analysis) {
+      fill_triangles(cr, f, *r.analysis, strain_values(*r.analysis, StrainKind::total), colour);
+      draw_band_traces(cr, f, *r.analysis);
+    } else {
+      fill_grid(cr, f, *r.stored, colour);
+      draw_band_traces(cr, f, *r.stored);
+    }
     draw_specimen_axes(cr, f, font, k / columns + 1 == rows || k + columns >= n);
     const double centre = f.pixels().x + 0.5 * f.pixels().w;
     // The label centred over the map where it fits, else kept inside the cell.
@@ -468,6 +548,14 @@ std::vector<PlotFrame> write_strain_panel(const std::filesystem::path& path,
                   ColourMap(ColourMapKind::viridis), 0.0, vmax, bar_style("γmax (-)", 1.0, true));
   canvas.write(path);
   return frames;
+}
+
+std::vector<PlotFrame> write_strain_panel(const std::filesystem::path& path,
+                                          const std::vector<const AnalysisResult*>& results,
+                                          const std::vector<std::string>& labels, double vmax) {
+  std::vector<StrainPanelMap> maps;
+  for (const AnalysisResult* r : results) maps.push_back({r, nullptr});
+  return write_strain_panel_of_maps(path, maps, labels, vmax);
 }
 
 }  // namespace trapdem::plot

@@ -3,10 +3,14 @@
 #include <algorithm>
 #include <cmath>
 #include <filesystem>
+#include <stdexcept>
+#include <vector>
 
 #include <fmt/format.h>
 
 #include "analysis/analysis_run.hpp"
+#include "analysis/field_history.hpp"
+#include "analysis/field_smoothing.hpp"
 #include "core/errors.hpp"
 #include "core/length_text.hpp"
 #include "core/path_text.hpp"
@@ -67,6 +71,80 @@ fs::path kept_figure(const fs::path& png) {
   return {};
 }
 
+std::vector<BandTracePoint> trace_of(const Json& trace) {
+  std::vector<BandTracePoint> points;
+  const Json &z = json_member_or_null(trace, "z_m"), &x = json_member_or_null(trace, "x_m");
+  if (z.type() != Json::Type::array || x.type() != Json::Type::array || z.size() != x.size()) return points;
+  for (std::size_t k = 0; k < z.size(); ++k) {
+    BandTracePoint p;
+    p.z = z[k].as_number();
+    p.x = x[k].as_number();
+    if (std::isfinite(p.z) && std::isfinite(p.x)) points.push_back(p);
+  }
+  return points;
+}
+
+// The map of the last layer of the run's field_history.h5, if that layer is the analysis the
+// metrics are of (the same snapshot, reference and view); else nothing and `why_not`.
+std::optional<plot::StoredStrainMap> stored_strain_map(const RunFolder& run, const Json& m, const ExperimentConfig& specimen,
+                                                       const std::string& file_name, std::string& why_not) {
+  const fs::path file = run.analysis().field_history_h5();
+  if (!fs::exists(file)) {
+    why_not = fmt::format("{} is missing", file_name);
+    return std::nullopt;
+  }
+  try {
+    FieldHistory h = read_field_history(file);
+    const Json& inputs = json_member_or_null(m, "inputs");
+    const auto text = [&](const char* key) {
+      const Json& v = json_member_or_null(inputs, key);
+      return v.type() == Json::Type::string ? v.as_string() : std::string();
+    };
+    if (h.layers() == 0 || h.labels.back() != text("at_snapshot") || h.reference_label != text("reference_snapshot") ||
+        h.view != text("view")) {
+      why_not = fmt::format("{} is of another analysis than metrics.json (its last layer, snapshot {} from {}, {} "
+                            "view; metrics.json: snapshot {} from {}, {} view)",
+                            file_name, h.layers() ? h.labels.back() : "none", h.reference_label, h.view,
+                            text("at_snapshot"), text("reference_snapshot"), text("view"));
+      return std::nullopt;
+    }
+    plot::StoredStrainMap map;
+    map.name = h.case_name;
+    map.gamma_max.grid = h.grid;
+    const std::size_t nodes = h.grid.nx * h.grid.nz, last = h.layers() - 1;
+    map.gamma_max.value.assign(h.gamma_max.value.begin() + static_cast<std::ptrdiff_t>(last * nodes),
+                               h.gamma_max.value.begin() + static_cast<std::ptrdiff_t>((last + 1) * nodes));
+    const Json& bands = json_member_or_null(m, "shear_bands");
+    const Json& trapdoor = json_member_or_null(m, "trapdoor");
+    map.mean_diameter = json_number_or_nan(json_member_or_null(m, "particles"), "mean_diameter_m");
+    map.smoothing_diameters = json_number_or_nan(bands, "smoothing_diameters");
+    const double smoothing = json_number_or_nan(bands, "smoothing_m");
+    map.trapdoor.centre_x = json_number_or_nan(trapdoor, "centre_x_m");
+    map.trapdoor.width = json_number_or_nan(trapdoor, "width_m");
+    map.travel = json_number_or_nan(trapdoor, "travel_m");
+    map.box_width = specimen.box.width;
+    for (const double v : {map.mean_diameter, map.smoothing_diameters, smoothing, map.trapdoor.centre_x,
+                           map.trapdoor.width, map.travel})
+      if (!std::isfinite(v)) {
+        why_not = "metrics.json lacks the trapdoor's geometry, the particles' mean diameter or the smoothing length";
+        return std::nullopt;
+      }
+    map.gamma_max = smooth_grid_field(map.gamma_max, smoothing);
+    for (const char* side : {"left", "right"}) {
+      const Json& band = json_member_or_null(bands, side);
+      map.band_traces.push_back(trace_of(json_member_or_null(band, "trace")));
+      const Json& branches = json_member_or_null(band, "branches");
+      if (branches.type() == Json::Type::array)
+        for (std::size_t k = 0; k < branches.size(); ++k)
+          map.branch_traces.push_back(trace_of(json_member_or_null(branches[k], "trace")));
+    }
+    return map;
+  } catch (const std::runtime_error& e) {  // InputError, FileError: a damaged or foreign file
+    why_not = fmt::format("{} cannot be read: {}", file_name, e.what());
+    return std::nullopt;
+  }
+}
+
 }  // namespace
 
 StoredAnalysis stored_final_analysis(const RunFolder& run, const fs::path& names_relative_to) {
@@ -88,6 +166,8 @@ StoredAnalysis stored_final_analysis(const RunFolder& run, const fs::path& names
                            run.snapshots_h5().filename().string(), file_name, differs);
       return s;
     }
+    s.strain_map = stored_strain_map(run, m, specimen, path_from(run.analysis().field_history_h5(), names_relative_to),
+                                     s.strain_map_note);
     s.metrics = std::move(m);
   } catch (const InputError& e) {
     s.note = fmt::format("not analysed: {} is missing and {} cannot be read: {}", run.snapshots_h5().filename().string(),

@@ -7,14 +7,16 @@
 // from the start of lowering, with every analysis setting at its default (a `trapdem analyze
 // --at 40mm` or `--grid 2mm` left there would be other numbers under the same names). The figures
 // `trapdem analyze` drew with that file (analysis/shear_strain.png, vertical_displacement.png, kept
-// by `scripts/publish-study.sh --figures`) are then the only pictures of the run: the report shows
-// them, each on its own colour scale, where it cannot draw its own.
+// by `scripts/publish-study.sh --figures`) are the run's own pictures: the report shows them, each
+// on its own colour scale, where it cannot draw its own. Its strain panel draws such a run from
+// analysis/field_history.h5 (published with the metrics) on the panel's one colour scale.
 #include <filesystem>
 #include <optional>
 #include <string>
 
 #include "core/json.hpp"
 #include "experiment/run_folder.hpp"
+#include "plot/specimen_figures.hpp"
 
 namespace trapdem {
 
@@ -25,6 +27,11 @@ struct StoredAnalysis {
   // empty where there is none.
   std::filesystem::path strain_figure;        // analysis/shear_strain.png: total gamma_max at the end
   std::filesystem::path displacement_figure;  // analysis/vertical_displacement.png: contours at the end
+  // With usable metrics and an analysis/field_history.h5 of the same analysis (its last layer the
+  // metrics' snapshot, from the same reference): the total gamma_max there on its grid, smoothed
+  // as the analysis smoothed it, for the report's panel (one colour scale with the other cases).
+  std::optional<plot::StoredStrainMap> strain_map;
+  std::string strain_map_note;  // why there is none, where metrics are usable
 };
 
 // The stored analysis of a finished run (call when the run's snapshots are missing). Throws

@@ -268,20 +268,29 @@ fs::path write_study_report(const fs::path& dir, const StudyReportInput& in) {
 
   // Figures first: the page never points at an image that is not there.
   std::set<std::string> written;  // the figures' file names
-  std::vector<const AnalysisResult*> finals;
+  // The panel: each case's analysis, or its stored map where its runs' snapshots are gone.
+  std::vector<plot::StrainPanelMap> finals;
   std::vector<std::string> panel_titles;  // the case labels
+  bool stored_in_panel = false;
   for (const StudyCaseResult& c : in.cases) {
-    if (!c.final_analysis) continue;
-    finals.push_back(c.final_analysis);
+    if (c.final_analysis) {
+      finals.push_back({c.final_analysis, nullptr});
+    } else if (c.stored_strain_map) {
+      finals.push_back({nullptr, c.stored_strain_map.get()});
+      stored_in_panel = true;
+    } else {
+      continue;
+    }
     panel_titles.push_back(c.summary.label);
   }
   double vmax = in.settings.max_strain;
   if (!(vmax > 0.0))
-    for (const AnalysisResult* r : finals) vmax = std::max(vmax, plot::auto_strain_scale(*r));
+    for (const plot::StrainPanelMap& m : finals)
+      vmax = std::max(vmax, m.analysis ? plot::auto_strain_scale(*m.analysis) : plot::auto_strain_scale(*m.stored));
   const bool has_panel = !finals.empty();
   const ReportFigure panel = report_figure("strain_panel", in.format);
   if (has_panel)
-    write_figure(dir, panel, [&](const fs::path& p) { plot::write_strain_panel(p, finals, panel_titles, vmax); },
+    write_figure(dir, panel, [&](const fs::path& p) { plot::write_strain_panel_of_maps(p, finals, panel_titles, vmax); },
                  written);
   // The contour figures on one scale: the colours span +-the trapdoor's displacement (the same for
   // every case at report.contours_at), the lines at one step for every case (not each figure's own
@@ -378,8 +387,12 @@ fs::path write_study_report(const fs::path& dir, const StudyReportInput& in) {
   if (has_panel) {
     h += fmt::format("<figure>{}<figcaption>Total maximum shear strain γ<sub>max</sub> (White &amp; "
                      "Bolton 2004) from the start of lowering, particles near the front window; one colour scale, 0 to "
-                     "{:g} (the paper's Figure 7).</figcaption></figure>\n",
-                     image_html(panel, "Panel of maximum shear strain maps, one per case"), vmax);
+                     "{:g} (the paper's Figure 7).{}</figcaption></figure>\n",
+                     image_html(panel, "Panel of maximum shear strain maps, one per case"), vmax,
+                     stored_in_panel ? " A map marked “stored grid” is of a run whose snapshots are gone, drawn from its "
+                                       "analysis/field_history.h5: the same triangles sampled once per mean diameter, "
+                                       "smoothed as the analysis smooths them."
+                                     : "");
   } else {
     h += "<p class=\"note\">No case has a figure the report could draw.</p>\n";
   }
@@ -391,7 +404,7 @@ fs::path write_study_report(const fs::path& dir, const StudyReportInput& in) {
     if (!c.final_analysis && !c.stored_strain_figure.empty())
       h += stored_figure_html(c, c.stored_strain_figure, "Maximum shear strain map of " + c.summary.label,
                               fmt::format("{}: the map its run's own analysis drew, on that figure's colour scale "
-                                          "(not the panel's). {}",
+                                          "(not the panel's), at the triangles' resolution. {}",
                                           markup_escape(c.summary.label), markup_escape(c.missing_note)));
   if (stored_maps) h += "</div>\n";
   for (const StudyCaseResult& c : in.cases)

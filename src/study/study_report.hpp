@@ -1,17 +1,20 @@
 #pragma once
 // The study report: DIR/report/index.html with its figures beside it (no network, no script), and
 // the same numbers for machines (summary.json, metrics.csv). Sections: findings (study_findings), the
-// Figure-7-style panel of maximum shear strain at the final displacement on one colour scale, vertical
+// Figure-7-style panel of maximum shear strain at the final displacement on one colour scale (a run
+// without snapshots drawn from its stored field history), vertical
 // displacement contours at report.contours_at (a run without snapshots: the figures its own analysis
 // drew, said as such), the ground reaction curves on one plot, the metrics
 // table (each metric as mean and spread over the case's replicates), the sinkhole estimates, the parameters that differ, and each run's cost.
 #include <filesystem>
+#include <memory>
 #include <string>
 #include <utility>
 #include <vector>
 
 #include "analysis/analysis_run.hpp"
 #include "plot/figure_format.hpp"
+#include "plot/specimen_figures.hpp"
 #include "study/case_summary.hpp"
 #include "study/replicate_statistics.hpp"
 #include "study/study_definition.hpp"
@@ -29,6 +32,9 @@ struct StudyRunResult {
   // Without snapshots: the figures `trapdem analyze` drew for the run, kept in its analysis/
   // (stored_analysis.hpp); empty where there is none or where the report draws its own.
   std::filesystem::path stored_strain_figure, stored_displacement_figure;
+  // Without snapshots: the final strain from its analysis/field_history.h5, for the panel (null:
+  // none usable, or the report draws its own).
+  std::shared_ptr<const plot::StoredStrainMap> stored_strain_map;
 };
 
 struct StudyCaseResult {
@@ -43,6 +49,8 @@ struct StudyCaseResult {
   // Where no run of the case has snapshots: the first analysed run's own figures (StudyRunResult),
   // shown in place of the panel's map and of the contours, each on its own colour scale.
   std::filesystem::path stored_strain_figure, stored_displacement_figure;
+  // Where no run of the case has snapshots: the first analysed run's stored map, drawn in the panel.
+  std::shared_ptr<const plot::StoredStrainMap> stored_strain_map;
   std::vector<std::pair<std::string, std::string>> parameters;  // figure_run's resolved configuration
   double element_confining = kMissing;               // Pa, of the element test's angles (report.element_test)
 };

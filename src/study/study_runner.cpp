@@ -307,6 +307,13 @@ StudyRunResult summarise_run(const StudyDefinition& study, const StudyCase& c, c
     if (!stored.metrics) return r;
     r.stored_strain_figure = stored.strain_figure;
     r.stored_displacement_figure = stored.displacement_figure;
+    if (stored.strain_map) {
+      auto map = std::make_shared<plot::StoredStrainMap>(std::move(*stored.strain_map));
+      map->name = c.label;
+      r.stored_strain_map = std::move(map);
+    } else {
+      r.missing_note += fmt::format("; not in the strain panel: {}", stored.strain_map_note);
+    }
     read_mechanism_metrics(*stored.metrics, r.summary);
     read_run_numbers(c, run, study.report, quiet, terminal, r.summary);
     r.analysed = true;
@@ -374,8 +381,12 @@ fs::path write_study_outputs(const StudyDefinition& study, const StudyScale& sca
         r.stored_strain_figure = last.stored_strain_figure;
         r.stored_displacement_figure = last.stored_displacement_figure;
       }
+      if (!r.final_analysis && !r.stored_strain_map) r.stored_strain_map = last.stored_strain_map;
     }
-    if (r.final_analysis) r.stored_strain_figure = r.stored_displacement_figure = fs::path();
+    if (r.final_analysis) {
+      r.stored_strain_figure = r.stored_displacement_figure = fs::path();
+      r.stored_strain_map.reset();
+    }
     if (analysed.empty()) {
       r.summary.name = c.name;
       r.summary.label = c.label;

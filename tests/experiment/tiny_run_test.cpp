@@ -1,6 +1,7 @@
 // The tiny preset through all four stages: the loads before and during lowering, and a run
 // interrupted and resumed against one that ran straight through.
 #include <gtest/gtest.h>
+#include <fmt/format.h>
 #include <omp.h>
 
 #include <deque>
@@ -9,7 +10,9 @@
 #include <regex>
 #include <sstream>
 
+#include "core/build_info.hpp"
 #include "core/errors.hpp"
+#include "core/json.hpp"
 #include "experiment/strongbox.hpp"
 #include "experiment/trapdoor_experiment.hpp"
 #include "io/checkpoint.hpp"
@@ -170,6 +173,14 @@ TEST(TinyRun, ResumedRunEndsIdentical) {
     ASSERT_TRUE(std::regex_search(record, recorded, std::regex(R"("particle_steps": ([0-9]+))"))) << record;
     const double total = std::stod(recorded[1]);
     EXPECT_NEAR(particle_steps[0] + particle_steps[1] + particle_steps[2] + particle_steps[3], total, 6e-4 * total);
+    // The code and the host a result is traced to: the commit, the CPU, threads and ranks.
+    const Json run = Json::parse(record, "run.json");
+    EXPECT_EQ(run["trapdem_commit"].as_string(), std::string(build_info().commit));
+    EXPECT_EQ(run["trapdem_modified"].as_bool(), build_info().modified);
+    EXPECT_EQ(run["cpu"].as_string(), describe_cpu());
+    EXPECT_EQ(run["threads"].as_number(), 1.0);
+    EXPECT_EQ(run["ranks"].as_number(), 1.0);
+    EXPECT_NE(log.find(fmt::format("  trapdem {}, on {}", describe_build(), describe_cpu())), std::string::npos) << log;
   }
 
   // One run interrupted twice (in an early stage, then during lowering) and resumed each time: each

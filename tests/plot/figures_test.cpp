@@ -5,9 +5,12 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <cstdint>
 #include <filesystem>
 #include <functional>
 #include <numbers>
+#include <stdexcept>
+#include <vector>
 
 #include <fmt/format.h>
 
@@ -227,4 +230,57 @@ TEST(StrainPanel, PanelsShareOneLengthScale) {
   EXPECT_NEAR(frames[0].pixels().w * 0.14, frames[1].pixels().w * 0.1, 1e-9);
   const std::string svg = read_text_file(scratch / "panel-scale.svg");
   EXPECT_NE(svg.find("one colour and length scale"), std::string::npos);
+}
+
+// A run whose snapshots are gone is drawn from its stored grid (field_history.h5's last layer) on
+// the panel's scales: its cells in the colour of their value on the panel's one colour scale, its
+// box on the same mm per unit, empty space light grey as around the triangles. A map that is both
+// or neither an analysis and a stored grid is a programming error.
+TEST(StrainPanel, AStoredGridIsDrawnOnThePanelsScales) {
+  const AnalysisResult a = synthetic_result("a");
+  plot::StoredStrainMap m;
+  m.name = "stored";
+  m.box_width = 0.1;
+  m.trapdoor = {0.05, 0.03, 0.0};
+  m.travel = 0.006;
+  m.mean_diameter = 0.002;
+  m.smoothing_diameters = 2.0;
+  // Nodes every 2 mm over 0.1 x 0.06 m: gamma_max 1 in a stripe 10 mm wide over x = 20-30 mm, 0.1
+  // elsewhere, nothing above z = 50 mm (above the surface).
+  m.gamma_max.grid = GridSpec{0.001, 0.001, 0.002, 50, 30};
+  for (std::size_t j = 0; j < 30; ++j)
+    for (std::size_t i = 0; i < 50; ++i) {
+      const double x = m.gamma_max.grid.x(i), z = m.gamma_max.grid.z(j);
+      m.gamma_max.value.push_back(z > 0.05 ? std::nan("") : (x > 0.02 && x < 0.03 ? 1.0 : 0.1));
+    }
+  m.band_traces = {{{0.0, 0.035, 0.0, 0.0}, {0.04, 0.035, 0.0, 0.0}}};
+  EXPECT_EQ(plot::auto_strain_scale(m), 1.0);  // the 95th percentile (1) rounded up: 1
+  const ScratchDir scratch;
+  const double vmax = 2.0;
+  using Maps = std::vector<plot::StrainPanelMap>;
+  const auto frames = plot::write_strain_panel_of_maps(scratch / "panel.png", Maps{{&a, nullptr}, {nullptr, &m}},
+                                                       {"analysed", "stored"}, vmax);
+  ASSERT_EQ(frames.size(), 2u);
+  EXPECT_NEAR(frames[0].scale_x(), frames[1].scale_x(), 1e-12);
+  EXPECT_NEAR(frames[1].x_range().hi, 100.0, 1e-12);  // mm: the box
+  const test::PngImage image = test::read_png(scratch / "panel.png");
+  const auto pixel_at = [&](double x_mm, double z_mm) {
+    const double k = plot::kPngPixelsPerUnit;
+    return image.at(static_cast<int>(frames[1].px(x_mm) * k), static_cast<int>(frames[1].py(z_mm) * k));
+  };
+  const auto expected = [&](double value) {
+    const plot::Rgb c = plot::ColourMap(plot::ColourMapKind::viridis).of(value, 0.0, vmax);
+    const auto byte = [](double v) { return static_cast<std::uint32_t>(std::lround(v * 255.0)); };
+    return byte(c.r) << 16 | byte(c.g) << 8 | byte(c.b);
+  };
+  const auto near = [](std::uint32_t a, std::uint32_t b) {  // within 2 of 255 per channel (rounding)
+    for (int shift : {0, 8, 16})
+      if (std::abs(static_cast<int>(a >> shift & 0xff) - static_cast<int>(b >> shift & 0xff)) > 2) return false;
+    return true;
+  };
+  EXPECT_TRUE(near(pixel_at(25.0, 20.0), expected(1.0))) << std::hex << pixel_at(25.0, 20.0);
+  EXPECT_TRUE(near(pixel_at(70.0, 20.0), expected(0.1))) << std::hex << pixel_at(70.0, 20.0);
+  EXPECT_TRUE(near(pixel_at(70.0, 55.0), 0xededed)) << std::hex << pixel_at(70.0, 55.0);  // empty: light grey
+  EXPECT_THROW(plot::write_strain_panel_of_maps(scratch / "bad.png", Maps{{&a, &m}}), std::invalid_argument);
+  EXPECT_THROW(plot::write_strain_panel_of_maps(scratch / "bad.png", Maps{{nullptr, nullptr}}), std::invalid_argument);
 }

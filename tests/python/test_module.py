@@ -87,6 +87,12 @@ def test_a_run_folder_read(short_run):
     assert "trapdoor_stress_ratio" in grc.columns and len(grc) > 1
     assert grc["trapdoor_displacement_m"].iloc[-1] == pytest.approx(0.0005, rel=0.05)
     assert short_run.run["complete"] is True
+    # The code and the host the run is traced to: this module's build, this CPU, one thread.
+    build = trapdem.build_info()
+    assert short_run.run["trapdem_commit"] == build["commit"]
+    assert short_run.run["trapdem_modified"] == build["modified"]
+    assert short_run.run["cpu"] == build["cpu"] and build["cpu"]
+    assert short_run.run["threads"] == 1 and short_run.run["ranks"] == 1
     assert short_run.config["box"]["width"] == 0.08
     snapshots = short_run.snapshots
     assert [s["stage"] for s in snapshots][:2] == ["pluviation", "settling"]

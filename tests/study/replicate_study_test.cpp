@@ -189,8 +189,9 @@ void ASecondCallSkipsEveryFinishedReplicateAndElementTest() {
 
 // Snapshots are most of a run's size and what gets deleted or left on the cluster; the light results
 // keep analysis/metrics.json (and, published with --figures, the figures analyze drew). A report
-// made without them takes each run's numbers from there (the same numbers), shows the run's own
-// figures where they are kept and says whose they are, or draws none and says why; a metrics.json
+// made without them takes each run's numbers from there (the same numbers), draws the run in the
+// strain panel from its analysis/field_history.h5, shows the run's own figures where they are kept
+// and says whose they are, or draws none and says why; a metrics.json
 // of another analysis than the report's (here one at 2 mm of travel) is not taken for it: the run
 // is left out, the key named.
 void ARunWhoseSnapshotsAreGoneIsReportedFromItsStoredAnalysis() {
@@ -219,16 +220,22 @@ void ARunWhoseSnapshotsAreGoneIsReportedFromItsStoredAnalysis() {
   EXPECT_EQ(page.find(out().string()), std::string::npos) << page;
   EXPECT_EQ(page.find("contours_smooth.png"), std::string::npos);
   EXPECT_NE(page.find("contours_rough.png"), std::string::npos);
-  EXPECT_NE(page.find("strain_panel.png"), std::string::npos);  // Rough's panel
+  EXPECT_NE(page.find("strain_panel.png"), std::string::npos);
+  // Smooth is in the panel too, drawn from its first seed's analysis/field_history.h5, and the
+  // caption says so.
+  EXPECT_NE(page.find("A map marked “stored grid” is of a run whose snapshots are gone"), std::string::npos) << page;
+  EXPECT_EQ(page.find("not in the strain panel"), std::string::npos) << page;
 
-  // Without the figures too: no figure of Smooth, and the page says why.
+  // Without the figures and the field histories too: no figure of Smooth, and the page says why.
   for (int r = 0; r < 2; ++r)
-    for (const char* figure : {"shear_strain.png", "vertical_displacement.png"})
-      ASSERT_TRUE(fs::remove(run_dir(0, r) / "analysis" / figure));
+    for (const char* file : {"shear_strain.png", "vertical_displacement.png", "field_history.h5"})
+      ASSERT_TRUE(fs::remove(run_dir(0, r) / "analysis" / file));
   std::ofstream(out() / "report" / "my_sketch.png") << "a reader's own file";
   ASSERT_EQ(app::run_study(report_only), 0);
   page = read_text_file(out() / "report" / "index.html");
   EXPECT_NE(page.find("Smooth: no figures: snapshots.h5 is gone; the numbers are from "), std::string::npos) << page;
+  EXPECT_NE(page.find("field_history.h5 is missing"), std::string::npos) << page;
+  EXPECT_EQ(page.find("A map marked “stored grid”"), std::string::npos) << page;
   EXPECT_EQ(page.find("run_shear_strain_smooth.png"), std::string::npos);
   // The copies the previous report made are gone with it (they would pass for this report's);
   // a file of another name stays.
