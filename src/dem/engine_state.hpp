@@ -40,9 +40,11 @@ struct ContactLists {
   // still receive a share from an earlier block.
   std::vector<std::uint32_t> partner_reach;
   // What the rebuild criterion compares with (Simulation::lists_outdated): the positions (m) and
-  // the walls' displacements (m) at the last build.
+  // the walls' displacements (m) at the last build, and the skin (m) the lists were built with
+  // (a change of skin takes effect at the next build; the lists stay exact until then).
   std::vector<Vec3> position_at_build;
   std::vector<Vec3> wall_displacement_at_build;
+  double skin_at_build = 0.0;
 };
 
 struct EngineState {

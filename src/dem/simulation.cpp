@@ -363,12 +363,21 @@ void Simulation::integrate_positions() {
 // either bound could reach the skin: the lists then still hold every contact. And rebuilt when a
 // particle has moved more than the skin, even with the others: the build's bookkeeping (its
 // periodic image, and on a decomposition its rank) then never lags a particle by more than that.
+// The bounds compare with the skin the lists were built with, so a set_skin between builds leaves
+// them exact.
 bool Simulation::lists_outdated(const DisplacementsSinceBuild& all) const {
-  if (!lists_valid_ || all.pair_bound() > skin_ || all.max_length2 > skin_ * skin_) return true;
+  const double skin = state_.lists.skin_at_build;
+  if (!lists_valid_ || all.pair_bound() > skin || all.max_length2 > skin * skin) return true;
   for (std::size_t k = 0; k < state_.walls.size(); ++k)
-    if (all.wall_bound(state_.walls[k].displacement - state_.lists.wall_displacement_at_build[k]) > skin_)
+    if (all.wall_bound(state_.walls[k].displacement - state_.lists.wall_displacement_at_build[k]) > skin)
       return true;
   return false;
+}
+
+void Simulation::set_skin(double skin) {
+  if (!(skin > 0.0) || !std::isfinite(skin))
+    throw InputError(fmt::format("simulation: the Verlet skin must be a positive length in m (got {})", skin));
+  skin_ = skin;
 }
 
 void Simulation::rebuild_lists() {
@@ -426,13 +435,15 @@ void Simulation::rebuild_lists() {
   state_.lists.wall_displacement_at_build.resize(state_.walls.size());
   for (std::size_t k = 0; k < state_.walls.size(); ++k)
     state_.lists.wall_displacement_at_build[k] = state_.walls[k].displacement;
+  state_.lists.skin_at_build = skin_;
   lists_valid_ = true;
   stats_.rebuild_seconds += omp_get_wtime() - started;
 }
 
 Simulation::ListState Simulation::list_state() const {
   const ContactLists& lists = state_.lists;
-  return {pairs(), lists.walls, lists.position_at_build, lists.wall_displacement_at_build, rebuilds_since_reorder_};
+  return {pairs(),           lists.walls, lists.position_at_build, lists.wall_displacement_at_build,
+          rebuilds_since_reorder_, lists.skin_at_build};
 }
 
 void Simulation::drop_ghosts() {
@@ -460,6 +471,7 @@ void Simulation::restore(double time, const SimulationStats& stats, ListState li
   state_.lists.position_at_build = std::move(lists.position_at_build);
   state_.lists.wall_displacement_at_build = std::move(lists.wall_displacement_at_build);
   rebuilds_since_reorder_ = lists.rebuilds_since_reorder;
+  state_.lists.skin_at_build = lists.skin_at_build > 0.0 ? lists.skin_at_build : skin_;
   if (!state_.bodies.empty()) {  // the particles are in the checkpoint's order; their forces, the checkpoint's
     state_.bodies.locate_members(state_.particles.id);
     place_members(state_.bodies, state_.particles, true);  // the same bits: placed by the same formula

@@ -126,6 +126,12 @@ class Simulation {
   std::int64_t step_count() const { return stats_.steps; }
   double time_step() const { return dt_; }
 
+  // m, the Verlet skin of the next list build. A change (a stage of an experiment with a skin of
+  // its own) does not rebuild the lists: they stay valid for the skin they were built with
+  // (lists_outdated compares with it), and the next rebuild, when they are outdated, uses the new one.
+  void set_skin(double skin);
+  double skin() const { return skin_; }
+
   // s, the smallest contact time scale over the particles and the laws (the particle law's and
   // the walls'), as the normal model defines it (trapdem::critical_time_step, contact_law.hpp):
   // sqrt(m_min / k_max) for linear springs, the Rayleigh time for Hertz.
@@ -139,6 +145,7 @@ class Simulation {
     std::vector<Vec3> position_at_build;
     std::vector<Vec3> wall_displacement_at_build;
     std::int64_t rebuilds_since_reorder = 0;
+    double skin_at_build = 0.0;  // m; 0: not known (an earlier version's checkpoint): the current skin
   };
   ListState list_state() const;
   // Restores time, counters and lists; particles (forces and torques included), bodies

@@ -214,6 +214,25 @@ void load_packing(Config& c, ExperimentConfig& e) {
                                                     critical));
 }
 
+// A periodic depth holds at least twice the interaction range, the largest diameter plus the skin
+// (the engine's own check, at every list build), in the pour as after it. The pour's default skin
+// is reduced to what the period allows (never below the run's: a period too thin for that is the
+// engine's error, as before); a skin_fraction asked for that does not fit is an error here.
+void limit_pour_skin_to_the_period(Config& pour, ExperimentConfig& e) {
+  if (!e.box.periodic_depth || e.pour_skin() <= e.skin()) return;
+  const double d = e.material.sizes.max_diameter();
+  const double widest = 0.99 * (0.5 * e.box.depth - d);  // m, 1 % short of the limit: no tie in round-off
+  if (e.pour_skin() <= widest) return;
+  if (pour.has("skin_fraction")) {
+    pour.fail("skin_fraction",
+              fmt::format("a pour skin the periodic depth holds: box.depth = {:.4g} mm must be at least twice the "
+                          "largest diameter plus the skin, so at most {:.3g} of the largest diameter ({:.4g} mm) here",
+                          e.box.depth * 1e3, widest / d, d * 1e3));
+    return;
+  }
+  e.pluviation.skin_fraction = std::max(widest / d, e.numerics.skin_fraction);
+}
+
 // m, the height of the deposit pluviation.count particles make at pluviation.packing_fraction.
 double count_deposit_height(const ExperimentConfig& e) {
   const double d = e.material.sizes.mean_diameter();
@@ -414,6 +433,8 @@ ExperimentConfig ExperimentConfig::from(Config& c) {
   e.pluviation.packing_fraction =
       pour.get_double("packing_fraction", e.pluviation.packing_fraction, "", Range::open_closed(0.0, 0.75));
   e.pluviation.seed = static_cast<std::uint64_t>(pour.get_int("seed", 1, Range::non_negative()));
+  e.pluviation.skin_fraction =
+      pour.get_double("skin_fraction", e.pluviation.skin_fraction, "", Range::closed(0.0, kMaxSkinFraction));
   if (e.pluviation.count > 0) {
     // The deposit's height at the assumed solid fraction must fit in the box.
     const double height = count_deposit_height(e);
@@ -444,6 +465,7 @@ ExperimentConfig ExperimentConfig::from(Config& c) {
   e.numerics.max_overlap_fraction =
       num.get_double("max_overlap_fraction", e.numerics.max_overlap_fraction, "", Range::open_closed(0.0, 1.0));
   e.numerics.threads = static_cast<int>(num.get_int("threads", 0, Range::closed(0.0, kMaxThreads)));
+  limit_pour_skin_to_the_period(pour, e);
 
   Config out = c.get_table("output");
   e.output.snapshot_displacements =
@@ -486,6 +508,7 @@ ExperimentConfig ExperimentConfig::from(Config& c) {
   c.add_derived("derived.critical_time_step", e.critical_time_step(), "s");
   c.add_derived("derived.time_step", e.time_step(), "s");
   c.add_derived("derived.skin", e.skin(), "m");
+  if (!e.packing.particles) c.add_derived("derived.pour_skin", e.pour_skin(), "m");
   c.add_derived("derived.expected_particle_count", e.expected_particle_count());
   c.add_derived("derived.mean_diameter", e.material.sizes.mean_diameter(), "m");
   return e;
@@ -537,6 +560,13 @@ double ExperimentConfig::time_step() const {
 }
 
 double ExperimentConfig::skin() const { return numerics.skin_fraction * material.sizes.max_diameter(); }
+
+double ExperimentConfig::pour_skin() const {
+  const double fraction = pluviation.skin_fraction > 0.0 ? pluviation.skin_fraction : numerics.skin_fraction;
+  return fraction * material.sizes.max_diameter();
+}
+
+double ExperimentConfig::largest_skin() const { return packing.particles ? skin() : std::max(skin(), pour_skin()); }
 
 std::int64_t ExperimentConfig::expected_particle_count() const {
   if (packing.particles) return std::int64_t(packing.particles->size());

@@ -55,6 +55,10 @@ struct PluviationConfig {
   double flow_rate = 0.0;      // kg/s (0: as fast as the hopper band allows)
   double packing_fraction = 0.6; // assumed solid fraction of the deposit, for the surface estimate
   std::uint64_t seed = 1;
+  // The Verlet skin while pouring, fraction of the largest diameter (0: numerics.skin_fraction).
+  // The rain sets how often the lists are rebuilt (beads falling onto beads bouncing up); 3x the
+  // run's skin rebuilds a third as often at about the same cost a step (bench/RESULTS.md, 2026-12-07).
+  double skin_fraction = 0.6;
 };
 
 // [packing]: start from particles made elsewhere instead of pouring (packing_input.hpp).
@@ -148,7 +152,9 @@ struct ExperimentConfig {
   // smallest over its particles.
   double critical_time_step() const;
   double time_step() const;           // s
-  double skin() const;                // m
+  double skin() const;                // m, the Verlet skin after the pour (and of a run from a packing)
+  double pour_skin() const;           // m, the Verlet skin while pouring
+  double largest_skin() const;        // m, the larger of the two: the reach of what a skin bounds
   std::int64_t expected_particle_count() const;  // with a packing: its particle count
 };
 

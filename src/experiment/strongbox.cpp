@@ -10,7 +10,7 @@ std::vector<Wall> strongbox_walls_for(const ExperimentConfig& c) {
   const double left_edge = xc - 0.5 * b, right_edge = xc + 0.5 * b;
   // With a periodic depth the base rectangles reach past the period by the interaction range, so
   // that a particle that has crossed y = 0 or y = depth between list builds still finds the face.
-  const double reach = c.box.periodic_depth ? 2.0 * c.material.sizes.max_diameter() + c.skin() : 0.0;
+  const double reach = c.box.periodic_depth ? 2.0 * c.material.sizes.max_diameter() + c.largest_skin() : 0.0;
   const double half_depth = 0.5 * d + reach;
   const Vec3 ex{1, 0, 0}, ey{0, 1, 0}, ez{0, 0, 1};
   const ContactLaw& base = c.material.base;

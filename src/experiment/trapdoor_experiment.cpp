@@ -40,7 +40,7 @@ const char* stage_name(Stage s) {
 TrapdoorExperiment::TrapdoorExperiment(ExperimentConfig config) : config_(std::move(config)), hopper_(config_) {
   SimulationSettings s;
   s.time_step = config_.time_step();
-  s.skin = config_.skin();
+  s.skin = config_.packing.particles ? config_.skin() : config_.pour_skin();  // the first stage's
   s.domain = strongbox_domain(config_);
   s.max_overlap_fraction = config_.numerics.max_overlap_fraction;
   sim_ = std::make_unique<Simulation>(config_.packing.particles ? *config_.packing.particles : Particles{},
@@ -143,6 +143,13 @@ void TrapdoorExperiment::start_stage(Stage stage) {
   window_trapdoor_ = window_left_ = window_right_ = 0.0;
   window_steps_ = 0;
   install_gravity();
+  install_skin();
+}
+
+// The pour's skin while pouring, the run's after; the lists built with the pour's stay exact until
+// they are outdated (Simulation::set_skin), so a stage change rebuilds nothing.
+void TrapdoorExperiment::install_skin() {
+  sim_->set_skin(stage_ == Stage::pluviation ? config_.pour_skin() : config_.skin());
 }
 
 bool TrapdoorExperiment::settled(double& ratio) const {
@@ -419,6 +426,7 @@ void TrapdoorExperiment::restore(const std::map<std::string, std::string>& s) {
   // Checkpoints of an earlier version do not have it: the progress then counts from the resume.
   if (const auto it = s.find("experiment.particle_steps_total"); it != s.end()) particle_steps_total_ = dbl(it->first);
   install_gravity();
+  install_skin();
 }
 
 }  // namespace trapdem

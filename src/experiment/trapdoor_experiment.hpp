@@ -74,6 +74,7 @@ class TrapdoorExperiment {
   void install_gravity();
   void install_uniform_gravity();  // 1 g, the linear ramp to N g, N g (the frame off)
   double g_level_now() const;      // g, at the reference level in the frame
+  void install_skin();             // the stage's Verlet skin (the pour has its own)
   BaseLoad wall_load(std::size_t wall, double area, double reference_stress) const;
   void report(ExperimentObserver& observer, bool force);
 

@@ -134,6 +134,7 @@ void write_lists(const Hdf5Group& g, const Simulation::ListState& lists) {
   const Hdf5Group build = g.create_group("build");
   build.write_vec3s("position_at_build", lists.position_at_build, "m");
   build.write_vec3s("wall_displacement_at_build", lists.wall_displacement_at_build, "m");
+  build.set_double_attribute("skin_at_build", lists.skin_at_build);  // m
 }
 
 Simulation::ListState read_lists(const Hdf5Group& g) {
@@ -152,6 +153,8 @@ Simulation::ListState read_lists(const Hdf5Group& g) {
   const Hdf5Group build = g.group("build");
   lists.position_at_build = build.read_vec3s("position_at_build");
   lists.wall_displacement_at_build = build.read_vec3s("wall_displacement_at_build");
+  // An earlier version's checkpoint has none: 0, the skin of the run that resumes it.
+  if (build.has_attribute("skin_at_build")) lists.skin_at_build = build.double_attribute("skin_at_build");
   return lists;
 }
 

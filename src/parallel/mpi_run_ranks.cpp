@@ -42,6 +42,7 @@ void put_lists(Packer& packer, const Simulation::ListState& lists) {
   packer.put(lists.position_at_build);
   packer.put(lists.wall_displacement_at_build);
   packer.put(std::vector<std::int64_t>{lists.rebuilds_since_reorder});
+  packer.put(std::vector<double>{lists.skin_at_build});
 }
 Simulation::ListState get_lists(Unpacker& unpacker) {
   Simulation::ListState lists;
@@ -57,6 +58,9 @@ Simulation::ListState get_lists(Unpacker& unpacker) {
   const std::vector<std::int64_t> reorder = unpacker.get<std::int64_t>();
   if (reorder.size() != 1) throw FileError("a checkpointed rank state without its re-order count");
   lists.rebuilds_since_reorder = reorder[0];
+  const std::vector<double> skin = unpacker.get<double>();
+  if (skin.size() != 1) throw FileError("a checkpointed rank state without its lists' skin");
+  lists.skin_at_build = skin[0];
   return lists;
 }
 

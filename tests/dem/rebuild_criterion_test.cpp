@@ -12,6 +12,7 @@
 #include <string>
 #include <utility>
 
+#include "core/errors.hpp"
 #include "dem/simulation.hpp"
 #include "test_support.hpp"
 
@@ -190,4 +191,59 @@ TEST(RebuildCriterion, ABedOverALoweredTrapdoorMissesNoContact) {
   const double travelled = 0.5 * 3000 * sim.time_step();  // m, the door's
   EXPECT_GT(travelled, 5.0 * kSkin) << "the door moved too little to test the criterion";
   EXPECT_GT(sim.stats().rebuilds, 5);
+}
+
+// A skin changed between builds (an experiment's pour has a skin of its own): the lists stay
+// those of the skin they were built with until they are outdated by that skin, so the change
+// rebuilds nothing, and the next build uses the new skin. A bed at rest: no motion, no rebuild.
+TEST(RebuildCriterion, ASkinChangeTakesEffectAtTheNextBuild) {
+  Particles p;
+  add_layers(p, 4, 2, 2.0 * kRadius, kRadius, {}, 1);
+  Simulation sim(std::move(p), frictional_rolling_law(), settings_in(0.02));
+  sim.add_wall(Wall::plane("floor", {0, 0, 0}, {0, 0, 1}, frictional_rolling_law()));
+  sim.step();
+  ASSERT_EQ(sim.stats().rebuilds, 1);
+  EXPECT_EQ(sim.list_state().skin_at_build, kSkin);
+  sim.set_skin(3.0 * kSkin);
+  EXPECT_EQ(sim.skin(), 3.0 * kSkin);
+  sim.run(20);
+  EXPECT_EQ(sim.stats().rebuilds, 1) << "a skin change alone rebuilt the lists";
+  EXPECT_EQ(sim.list_state().skin_at_build, kSkin);
+  sim.add_particle(1000, {0.0, 0.0, 0.01}, kRadius, 2500.0);  // new particles: the lists are rebuilt
+  sim.step();
+  EXPECT_EQ(sim.stats().rebuilds, 2);
+  EXPECT_EQ(sim.list_state().skin_at_build, 3.0 * kSkin);
+  EXPECT_THROW(sim.set_skin(0.0), InputError);
+  EXPECT_THROW(sim.set_skin(-kSkin), InputError);
+}
+
+// The rain over the bed with a large skin while it falls, then the engine's skin while it lands
+// and bounces (and the other way round): no contact missed at any step across either change, and
+// the larger skin rebuilds less often over the same fall.
+TEST(RebuildCriterion, ARainMissesNoContactAcrossSkinChanges) {
+  auto rain = [] {
+    Particles p;
+    add_layers(p, 6, 2, 2.0 * kRadius, kRadius, {}, 1);
+    add_layers(p, 5, 3, 2.6 * kRadius, 8.0 * kRadius, {0.0, 0.0, -1.5}, 1000);
+    Simulation sim(std::move(p), frictional_rolling_law(), settings_in(0.02));
+    const ContactLaw wall_law = frictional_rolling_law();
+    sim.add_wall(Wall::plane("floor", {0, 0, 0}, {0, 0, 1}, wall_law));
+    sim.add_wall(Wall::plane("left", {-6.0 * kRadius, 0, 0}, {1, 0, 0}, wall_law));
+    sim.add_wall(Wall::plane("right", {6.0 * kRadius, 0, 0}, {-1, 0, 0}, wall_law));
+    sim.set_gravity(Vec3{0.0, 0.0, -9.81 * 50.0});
+    return sim;
+  };
+  Simulation large_first = rain();
+  large_first.set_skin(4.0 * kSkin);
+  std::size_t touching = step_checking_lists(large_first, 800, "a rain, large skin");
+  const std::int64_t large_rebuilds = large_first.stats().rebuilds;
+  large_first.set_skin(kSkin);
+  touching += step_checking_lists(large_first, 2200, "a rain, after the change to the small skin");
+  EXPECT_GT(touching, 3000u) << "the rain never reached the bed";
+
+  Simulation small_first = rain();
+  step_checking_lists(small_first, 800, "a rain, small skin");
+  EXPECT_LT(2 * large_rebuilds, small_first.stats().rebuilds) << "a skin 4x as large rebuilt as often";
+  small_first.set_skin(4.0 * kSkin);
+  step_checking_lists(small_first, 2200, "a rain, after the change to the large skin");
 }

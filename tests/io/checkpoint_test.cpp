@@ -141,6 +141,31 @@ TEST(Checkpoint, ResumeAfterParticlesWereAddedAndBeforeTheFirstStep) {
   }
 }
 
+// A run whose skin was changed (an experiment's pour has its own): the checkpoint keeps the skin
+// its lists were built with, so a resume whose owner sets the skin again only after the restore
+// (as TrapdoorExperiment::restore does) checks the lists against the right one: bit for bit.
+TEST(Checkpoint, TheListsSkinSurvivesAResume) {
+  ScratchDir dir;
+  const auto path = dir / "skin.h5";
+  Simulation straight = settling_box();
+  const double built_with = straight.skin();
+  straight.run(1500);
+  straight.set_skin(3.0 * built_with);
+  const std::int64_t rebuilds = straight.stats().rebuilds;
+  straight.run(1500);
+  ASSERT_GT(straight.stats().rebuilds, rebuilds) << "no list built with the new skin before the checkpoint";
+  ASSERT_EQ(straight.list_state().skin_at_build, 3.0 * built_with);
+  save_checkpoint(path, straight);
+  straight.run(2000);
+
+  Simulation resumed = settling_box();  // the skin of its settings until its owner sets it
+  restore_checkpoint(resumed, read_checkpoint(path));
+  EXPECT_EQ(resumed.list_state().skin_at_build, 3.0 * built_with);
+  resumed.set_skin(3.0 * built_with);
+  resumed.run(2000);
+  expect_bitwise_equal(straight, resumed);
+}
+
 TEST(Checkpoint, FailedWriteKeepsThePreviousCheckpoint) {
   ScratchDir dir;
   const auto path = dir / "checkpoint.h5";
