@@ -112,4 +112,72 @@ FilledHoles fill_interior_holes(const FilteredMesh& mesh, const std::vector<doub
   return filled;
 }
 
+GridField fill_interior_grid_holes(const GridField& field, std::size_t* filled) {
+  const std::size_t nx = field.grid.nx, nz = field.grid.nz;
+  if (field.value.size() != nx * nz)
+    throw InputError(fmt::format("fill_interior_grid_holes: {} values for a {} x {} grid", field.value.size(), nx, nz));
+  GridField out = field;
+  std::vector<double>& v = out.value;
+  auto missing = [&](std::size_t k) { return !std::isfinite(v[k]); };
+  // The NaN nodes reachable from the border through NaN nodes: empty space, left as it is.
+  std::vector<char> outside(v.size(), 0);
+  std::vector<std::size_t> stack;
+  auto visit = [&](std::size_t k) {
+    if (missing(k) && !outside[k]) {
+      outside[k] = 1;
+      stack.push_back(k);
+    }
+  };
+  for (std::size_t i = 0; i < nx; ++i) {
+    visit(i);
+    visit((nz - 1) * nx + i);
+  }
+  for (std::size_t j = 0; j < nz; ++j) {
+    visit(j * nx);
+    visit(j * nx + nx - 1);
+  }
+  auto neighbours = [&](std::size_t k, auto&& each) {
+    const std::size_t i = k % nx, j = k / nx;
+    if (i > 0) each(k - 1);
+    if (i + 1 < nx) each(k + 1);
+    if (j > 0) each(k - nx);
+    if (j + 1 < nz) each(k + nx);
+  };
+  while (!stack.empty()) {
+    const std::size_t k = stack.back();
+    stack.pop_back();
+    neighbours(k, visit);
+  }
+  // The holes, layer by layer: a layer's nodes take the mean of the neighbours that had a value
+  // before it (finite, or filled in an earlier layer), so the result does not depend on the order.
+  std::vector<std::size_t> hole;
+  for (std::size_t k = 0; k < v.size(); ++k)
+    if (missing(k) && !outside[k]) hole.push_back(k);
+  std::size_t count = 0;
+  while (!hole.empty()) {
+    std::vector<std::pair<std::size_t, double>> layer;
+    std::vector<std::size_t> rest;
+    for (const std::size_t k : hole) {
+      double sum = 0.0;
+      int n = 0;
+      neighbours(k, [&](std::size_t m) {
+        if (!missing(m)) {
+          sum += v[m];
+          ++n;
+        }
+      });
+      if (n > 0)
+        layer.emplace_back(k, sum / n);
+      else
+        rest.push_back(k);
+    }
+    if (layer.empty()) break;  // cannot happen: a hole not reached from the border touches a value
+    for (const auto& [k, value] : layer) v[k] = value;
+    count += layer.size();
+    hole = std::move(rest);
+  }
+  if (filled) *filled = count;
+  return out;
+}
+
 }  // namespace trapdem

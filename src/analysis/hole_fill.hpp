@@ -11,6 +11,7 @@
 #include <cstddef>
 #include <vector>
 
+#include "analysis/grid_field.hpp"
 #include "analysis/triangle_filter.hpp"
 #include "analysis/triangle_mesh.hpp"
 
@@ -25,5 +26,13 @@ struct FilledHoles {
 // `kept_values` holds a value per kept triangle of `mesh` (mesh.mesh order); non-finite values
 // count as missing. Throws InputError if its size differs from the kept triangles'.
 FilledHoles fill_interior_holes(const FilteredMesh& mesh, const std::vector<double>& kept_values);
+
+// The same for a grid field (a stored field_history.h5 layer, which samples the kept triangles: a
+// node that no kept triangle covered is NaN). The NaN nodes that cannot be reached from the grid's
+// border through NaN nodes (4-neighbours) are inside the specimen; each gets the mean of its finite
+// 4-neighbours, layer by layer from the finite nodes inward. NaN nodes connected to the border
+// (above the free surface, beside the walls, a crater open to the surface) stay NaN. A display aid.
+// `filled` (optional) receives the number of nodes filled.
+GridField fill_interior_grid_holes(const GridField& field, std::size_t* filled = nullptr);
 
 }  // namespace trapdem

@@ -215,22 +215,17 @@ void load_packing(Config& c, ExperimentConfig& e) {
 }
 
 // A periodic depth holds at least twice the interaction range, the largest diameter plus the skin
-// (the engine's own check, at every list build), in the pour as after it. The pour's default skin
-// is reduced to what the period allows (never below the run's: a period too thin for that is the
-// engine's error, as before); a skin_fraction asked for that does not fit is an error here.
-void limit_pour_skin_to_the_period(Config& pour, ExperimentConfig& e) {
+// (the engine's own check, at every list build): a pour skin larger than the run's that it does
+// not hold is an error here, naming the key, not at the pour's first list build.
+void check_pour_skin_against_the_period(Config& pour, const ExperimentConfig& e) {
   if (!e.box.periodic_depth || e.pour_skin() <= e.skin()) return;
   const double d = e.material.sizes.max_diameter();
-  const double widest = 0.99 * (0.5 * e.box.depth - d);  // m, 1 % short of the limit: no tie in round-off
-  if (e.pour_skin() <= widest) return;
-  if (pour.has("skin_fraction")) {
-    pour.fail("skin_fraction",
-              fmt::format("a pour skin the periodic depth holds: box.depth = {:.4g} mm must be at least twice the "
-                          "largest diameter plus the skin, so at most {:.3g} of the largest diameter ({:.4g} mm) here",
-                          e.box.depth * 1e3, widest / d, d * 1e3));
-    return;
-  }
-  e.pluviation.skin_fraction = std::max(widest / d, e.numerics.skin_fraction);
+  const double widest = 0.5 * e.box.depth - d;  // m
+  if (e.pour_skin() < widest) return;
+  pour.fail("skin_fraction",
+            fmt::format("a pour skin the periodic depth holds: box.depth = {:.4g} mm must be more than twice the "
+                        "largest diameter plus the skin, so less than {:.3g} of the largest diameter ({:.4g} mm) here",
+                        e.box.depth * 1e3, widest / d, d * 1e3));
 }
 
 // m, the height of the deposit pluviation.count particles make at pluviation.packing_fraction.
@@ -465,7 +460,7 @@ ExperimentConfig ExperimentConfig::from(Config& c) {
   e.numerics.max_overlap_fraction =
       num.get_double("max_overlap_fraction", e.numerics.max_overlap_fraction, "", Range::open_closed(0.0, 1.0));
   e.numerics.threads = static_cast<int>(num.get_int("threads", 0, Range::closed(0.0, kMaxThreads)));
-  limit_pour_skin_to_the_period(pour, e);
+  check_pour_skin_against_the_period(pour, e);
 
   Config out = c.get_table("output");
   e.output.snapshot_displacements =

@@ -57,8 +57,9 @@ struct PluviationConfig {
   std::uint64_t seed = 1;
   // The Verlet skin while pouring, fraction of the largest diameter (0: numerics.skin_fraction).
   // The rain sets how often the lists are rebuilt (beads falling onto beads bouncing up); 3x the
-  // run's skin rebuilds a third as often at about the same cost a step (bench/RESULTS.md, 2026-12-07).
-  double skin_fraction = 0.6;
+  // run's skin rebuilds a third as often, but every pair of the bed below pays for the longer lists:
+  // faster on a 60 000-bead pour, not on a 100 000-bead one (bench/RESULTS.md, 2026-12-07).
+  double skin_fraction = 0.0;
 };
 
 // [packing]: start from particles made elsewhere instead of pouring (packing_input.hpp).

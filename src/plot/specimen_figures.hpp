@@ -61,7 +61,7 @@ PlotFrame write_particles_figure(const std::filesystem::path& path, const Analys
 // diameter), the same field.
 struct StoredStrainMap {
   std::string name;
-  GridField gamma_max;               // -, NaN where no kept triangle covered the node
+  GridField gamma_max;               // -, NaN in empty space (inside the specimen filled: fill_interior_grid_holes)
   double box_width = 0.0;            // m
   TrapdoorGeometry trapdoor;         // centre and width (m); the base at z = 0
   double travel = 0.0;               // m, the trapdoor's displacement at the layer

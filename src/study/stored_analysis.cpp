@@ -11,6 +11,7 @@
 #include "analysis/analysis_run.hpp"
 #include "analysis/field_history.hpp"
 #include "analysis/field_smoothing.hpp"
+#include "analysis/hole_fill.hpp"
 #include "core/errors.hpp"
 #include "core/length_text.hpp"
 #include "core/path_text.hpp"
@@ -129,7 +130,10 @@ std::optional<plot::StoredStrainMap> stored_strain_map(const RunFolder& run, con
         why_not = "metrics.json lacks the trapdoor's geometry, the particles' mean diameter or the smoothing length";
         return std::nullopt;
       }
-    map.gamma_max = smooth_grid_field(map.gamma_max, smoothing);
+    // Smoothed as the analysis smoothed the triangles; the nodes inside the specimen that no kept
+    // triangle covered filled from their neighbours, as the analysis's figures fill their dropped
+    // triangles (no white specks; empty space stays empty).
+    map.gamma_max = fill_interior_grid_holes(smooth_grid_field(map.gamma_max, smoothing));
     for (const char* side : {"left", "right"}) {
       const Json& band = json_member_or_null(bands, side);
       map.band_traces.push_back(trace_of(json_member_or_null(band, "trace")));

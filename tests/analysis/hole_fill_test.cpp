@@ -5,6 +5,8 @@
 
 #include <algorithm>
 #include <cmath>
+#include <string>
+#include <vector>
 
 #include "analysis/hole_fill.hpp"
 #include "core/errors.hpp"
@@ -120,4 +122,72 @@ TEST(HoleFill, ValuesMustMatchTheKeptTriangles) {
   const FilteredMesh m = with_dropped(grid_mesh(3), {4}, values);
   values.pop_back();
   EXPECT_THROW(fill_interior_holes(m, values), InputError);
+}
+
+namespace {
+
+// A grid field from rows written top row first, as it would be drawn ('.' a NaN node, a digit its
+// value), node (i, j) at x = i, z = j.
+GridField grid_from_rows(const std::vector<std::string>& rows_top_first) {
+  GridField f;
+  f.grid.spacing = 1.0;
+  f.grid.nz = rows_top_first.size();
+  f.grid.nx = rows_top_first.front().size();
+  f.value.assign(f.grid.nx * f.grid.nz, std::nan(""));
+  for (std::size_t r = 0; r < rows_top_first.size(); ++r)
+    for (std::size_t i = 0; i < f.grid.nx; ++i) {
+      const char c = rows_top_first[r][i];
+      if (c != '.') f.value[(f.grid.nz - 1 - r) * f.grid.nx + i] = double(c - '0');
+    }
+  return f;
+}
+
+double at_row(const GridField& f, std::size_t i, std::size_t row_from_top) { return f.at(i, f.grid.nz - 1 - row_from_top); }
+
+}  // namespace
+
+// A specimen under empty space: its one uncovered node takes the mean of its four neighbours; a
+// pair of uncovered nodes fills from the values around it (each node the mean of its finite
+// neighbours), and the empty space above and the crater open to it stay empty.
+TEST(GridHoleFill, InteriorNodesFillAndEmptySpaceStaysEmpty) {
+  const GridField f = grid_from_rows({".........",   //
+                                      "22.222222",   // a crater, open to the space above
+                                      "22.212222",   //
+                                      "2224.4222",   // one node inside: (4 + 4 + 2 + 1) / 4
+                                      "222222222",   //
+                                      "2..222222",   // two nodes side by side
+                                      "222222222"});
+  std::size_t filled = 0;
+  const GridField g = fill_interior_grid_holes(f, &filled);
+  EXPECT_EQ(filled, 3u);
+  EXPECT_DOUBLE_EQ(at_row(g, 4, 3), (4.0 + 4.0 + 1.0 + 2.0) / 4.0);
+  EXPECT_DOUBLE_EQ(at_row(g, 1, 5), 2.0);  // its neighbours are all 2 (the other hole node not yet filled)
+  EXPECT_DOUBLE_EQ(at_row(g, 2, 5), 2.0);
+  for (std::size_t i = 0; i < 9; ++i) EXPECT_TRUE(std::isnan(at_row(g, i, 0))) << "empty space above, column " << i;
+  EXPECT_TRUE(std::isnan(at_row(g, 2, 1)));  // the crater
+  EXPECT_TRUE(std::isnan(at_row(g, 2, 2)));
+  // Every node with a value keeps it.
+  for (std::size_t k = 0; k < f.value.size(); ++k)
+    if (std::isfinite(f.value[k])) EXPECT_EQ(g.value[k], f.value[k]) << "node " << k;
+}
+
+// A deeper hole fills inward, layer by layer: the ring first, then the centre from the ring.
+TEST(GridHoleFill, ADeeperHoleFillsLayerByLayer) {
+  const GridField f = grid_from_rows({"44444",  //
+                                      "4...4",  //
+                                      "4...4",  //
+                                      "4...4",  //
+                                      "44444"});
+  std::size_t filled = 0;
+  const GridField g = fill_interior_grid_holes(f, &filled);
+  EXPECT_EQ(filled, 9u);
+  for (double v : g.value) EXPECT_DOUBLE_EQ(v, 4.0);  // a constant field stays constant
+  // Without an interior hole nothing changes.
+  std::size_t none = 1;
+  const GridField h = fill_interior_grid_holes(grid_from_rows({"...", "123", "456"}), &none);
+  EXPECT_EQ(none, 0u);
+  EXPECT_TRUE(std::isnan(at_row(h, 1, 0)));
+  GridField bad = f;
+  bad.value.pop_back();
+  EXPECT_THROW(fill_interior_grid_holes(bad), InputError);
 }

@@ -275,16 +275,13 @@ TEST(StudyDefinition, TheEqualDensityPaperStudyIsPaperFastFromTheCalibratedDepos
 }
 
 // The paper-box replicates (issue 36): Calibrated and RF3 resolved exactly as paper-table2's
-// paper-fast cases, key for key, but for the pour seeds 2 and 3 (seed 1 is paper-table2's run) and
-// the pour's skin, pinned at the 0.2 they were poured with (the default until 2026-12-07), so that
-// the seed-2 deposit can be made again bit for bit.
+// paper-fast cases, key for key, but for the pour seeds 2 and 3 (seed 1 is paper-table2's run).
 TEST(StudyDefinition, ThePaperReplicatesArePaperTable2sPaperFastCasesWithSeedsTwoAndThree) {
   const fs::path studies = fs::path(TRAPDEM_SOURCE_DIR) / "studies";
   const StudyDefinition replicates = load_study(studies / "paper-replicates.toml");
   const StudyDefinition table2 = load_study(studies / "paper-table2.toml");
   const StudyScale& scale = replicates.scale("paper-fast");
-  StudyScale fast = table2.scale("paper-fast");
-  fast.base.overrides.push_back("pluviation.skin_fraction=0.2");
+  const StudyScale& fast = table2.scale("paper-fast");
   EXPECT_EQ(scale.replicates.seeds, (std::vector<std::uint64_t>{2, 3}));
   EXPECT_FALSE(fast.replicates.asked());
   ASSERT_EQ(replicates.cases.size(), 2u);
