@@ -112,29 +112,33 @@ FilledHoles fill_interior_holes(const FilteredMesh& mesh, const std::vector<doub
   return filled;
 }
 
-GridField fill_interior_grid_holes(const GridField& field, std::size_t* filled) {
+GridField fill_interior_grid_holes(const GridField& field, double wall_left, double wall_right, std::size_t* filled) {
   const std::size_t nx = field.grid.nx, nz = field.grid.nz;
   if (field.value.size() != nx * nz)
     throw InputError(fmt::format("fill_interior_grid_holes: {} values for a {} x {} grid", field.value.size(), nx, nz));
   GridField out = field;
   std::vector<double>& v = out.value;
   auto missing = [&](std::size_t k) { return !std::isfinite(v[k]); };
-  // The NaN nodes reachable from the border through NaN nodes: empty space, left as it is.
+  // Strictly between the walls: a node on a wall is never covered (the particles' centres stay a
+  // radius away), and a column of them would be a way out along the wall.
+  const double tolerance = 1e-9 * field.grid.spacing;  // m
+  auto in_box = [&](std::size_t k) {
+    const double x = field.grid.x(k % nx);
+    return x > wall_left + tolerance && x < wall_right - tolerance;
+  };
+  // The NaN nodes between the walls reachable from the top or bottom row through such nodes: empty
+  // space, left as it is.
   std::vector<char> outside(v.size(), 0);
   std::vector<std::size_t> stack;
   auto visit = [&](std::size_t k) {
-    if (missing(k) && !outside[k]) {
+    if (missing(k) && !outside[k] && in_box(k)) {
       outside[k] = 1;
       stack.push_back(k);
     }
   };
-  for (std::size_t i = 0; i < nx; ++i) {
+  for (std::size_t i = 0; i < nx; ++i) {  // the bottom and top rows (not the side columns: walls)
     visit(i);
     visit((nz - 1) * nx + i);
-  }
-  for (std::size_t j = 0; j < nz; ++j) {
-    visit(j * nx);
-    visit(j * nx + nx - 1);
   }
   auto neighbours = [&](std::size_t k, auto&& each) {
     const std::size_t i = k % nx, j = k / nx;
@@ -152,7 +156,7 @@ GridField fill_interior_grid_holes(const GridField& field, std::size_t* filled) 
   // before it (finite, or filled in an earlier layer), so the result does not depend on the order.
   std::vector<std::size_t> hole;
   for (std::size_t k = 0; k < v.size(); ++k)
-    if (missing(k) && !outside[k]) hole.push_back(k);
+    if (missing(k) && !outside[k] && in_box(k)) hole.push_back(k);
   std::size_t count = 0;
   while (!hole.empty()) {
     std::vector<std::pair<std::size_t, double>> layer;

@@ -133,7 +133,7 @@ std::optional<plot::StoredStrainMap> stored_strain_map(const RunFolder& run, con
     // Smoothed as the analysis smoothed the triangles; the nodes inside the specimen that no kept
     // triangle covered filled from their neighbours, as the analysis's figures fill their dropped
     // triangles (no white specks; empty space stays empty).
-    map.gamma_max = fill_interior_grid_holes(smooth_grid_field(map.gamma_max, smoothing));
+    map.gamma_max = fill_interior_grid_holes(smooth_grid_field(map.gamma_max, smoothing), 0.0, specimen.box.width);
     for (const char* side : {"left", "right"}) {
       const Json& band = json_member_or_null(bands, side);
       map.band_traces.push_back(trace_of(json_member_or_null(band, "trace")));

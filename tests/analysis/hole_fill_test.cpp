@@ -148,19 +148,23 @@ double at_row(const GridField& f, std::size_t i, std::size_t row_from_top) { ret
 
 // A specimen under empty space: its one uncovered node takes the mean of its four neighbours; a
 // pair of uncovered nodes fills from the values around it (each node the mean of its finite
-// neighbours), and the empty space above and the crater open to it stay empty.
+// neighbours), as does a node beside a side wall; the empty space above, the crater open to it and
+// the space below the base (open to the bottom row) stay empty.
 TEST(GridHoleFill, InteriorNodesFillAndEmptySpaceStaysEmpty) {
   const GridField f = grid_from_rows({".........",   //
                                       "22.222222",   // a crater, open to the space above
                                       "22.212222",   //
                                       "2224.4222",   // one node inside: (4 + 4 + 2 + 1) / 4
-                                      "222222222",   //
+                                      "22222222.",   // beside the right wall
                                       "2..222222",   // two nodes side by side
-                                      "222222222"});
+                                      "2222222.."});  // below the base
   std::size_t filled = 0;
-  const GridField g = fill_interior_grid_holes(f, &filled);
-  EXPECT_EQ(filled, 3u);
+  const GridField g = fill_interior_grid_holes(f, -0.5, 8.5, &filled);
+  EXPECT_EQ(filled, 4u);
   EXPECT_DOUBLE_EQ(at_row(g, 4, 3), (4.0 + 4.0 + 1.0 + 2.0) / 4.0);
+  EXPECT_DOUBLE_EQ(at_row(g, 8, 4), 2.0);
+  EXPECT_TRUE(std::isnan(at_row(g, 7, 6)));
+  EXPECT_TRUE(std::isnan(at_row(g, 8, 6)));
   EXPECT_DOUBLE_EQ(at_row(g, 1, 5), 2.0);  // its neighbours are all 2 (the other hole node not yet filled)
   EXPECT_DOUBLE_EQ(at_row(g, 2, 5), 2.0);
   for (std::size_t i = 0; i < 9; ++i) EXPECT_TRUE(std::isnan(at_row(g, i, 0))) << "empty space above, column " << i;
@@ -179,15 +183,41 @@ TEST(GridHoleFill, ADeeperHoleFillsLayerByLayer) {
                                       "4...4",  //
                                       "44444"});
   std::size_t filled = 0;
-  const GridField g = fill_interior_grid_holes(f, &filled);
+  const GridField g = fill_interior_grid_holes(f, -0.5, 8.5, &filled);
   EXPECT_EQ(filled, 9u);
   for (double v : g.value) EXPECT_DOUBLE_EQ(v, 4.0);  // a constant field stays constant
   // Without an interior hole nothing changes.
   std::size_t none = 1;
-  const GridField h = fill_interior_grid_holes(grid_from_rows({"...", "123", "456"}), &none);
+  const GridField h = fill_interior_grid_holes(grid_from_rows({"...", "123", "456", "7.."}), -0.5, 2.5, &none);
   EXPECT_EQ(none, 0u);
   EXPECT_TRUE(std::isnan(at_row(h, 1, 0)));
+  EXPECT_TRUE(std::isnan(at_row(h, 1, 3)));
   GridField bad = f;
   bad.value.pop_back();
-  EXPECT_THROW(fill_interior_grid_holes(bad), InputError);
+  EXPECT_THROW(fill_interior_grid_holes(bad, -0.5, 4.5), InputError);
+}
+
+// A grid wider than the box (its columns cover the triangles' nodes, in steps of the spacing): a
+// column beyond the right wall holds no value at all, and is no way out for a node beside the wall.
+TEST(GridHoleFill, BeyondTheWallsIsNoWayOut) {
+  const GridField f = grid_from_rows({"......",  //
+                                      "22222.",  //
+                                      "2222..",  // beside the wall at x = 4.5
+                                      "22222.",  //
+                                      "22222."});
+  std::size_t filled = 0;
+  const GridField g = fill_interior_grid_holes(f, -0.5, 4.5, &filled);
+  EXPECT_EQ(filled, 1u);
+  EXPECT_DOUBLE_EQ(at_row(g, 4, 2), 2.0);
+  for (std::size_t row = 0; row < 5; ++row) EXPECT_TRUE(std::isnan(at_row(g, 5, row))) << "beyond the wall, row " << row;
+  // With the wall past the last column, that column is open space, and the node beside it with it.
+  const GridField open = fill_interior_grid_holes(f, -0.5, 5.5, &filled);
+  EXPECT_EQ(filled, 0u);
+  EXPECT_TRUE(std::isnan(at_row(open, 4, 2)));
+  // With the wall on the last column, the column is the wall's (no particle centre reaches it):
+  // no way out either, and it stays empty.
+  const GridField on_wall = fill_interior_grid_holes(f, 0.0, 5.0, &filled);
+  EXPECT_EQ(filled, 1u);
+  EXPECT_DOUBLE_EQ(at_row(on_wall, 4, 2), 2.0);
+  EXPECT_TRUE(std::isnan(at_row(on_wall, 5, 2)));
 }
