@@ -175,7 +175,7 @@ GridField fill_interior_grid_holes(const GridField& field, double wall_left, dou
       else
         rest.push_back(k);
     }
-    if (layer.empty()) break;  // cannot happen: a hole not reached from the border touches a value
+    if (layer.empty()) break;  // cannot happen: every hole (a NaN region not open to empty space) touches a value
     for (const auto& [k, value] : layer) v[k] = value;
     count += layer.size();
     hole = std::move(rest);

@@ -79,12 +79,8 @@ void add_layers(Particles& p, int per_side, int layers, double spacing, double b
               kRadius, 2500.0, v);
 }
 
-}  // namespace
-
-// The pour: a rain at 1.5 m/s (and gravity) onto a bed resting on the floor. The rain moves as
-// one, so the lists are rebuilt about once per skin it falls; the beads land, bounce and push
-// the bed into the side walls, and no contact is missed.
-TEST(RebuildCriterion, ARainOverABedMissesNoContact) {
+// A rain at 1.5 m/s onto a bed at rest on a floor between two side walls, under 50 g.
+Simulation rain_over_a_bed() {
   Particles p;
   add_layers(p, 6, 2, 2.0 * kRadius, kRadius, {}, 1);                        // the bed, at rest
   add_layers(p, 5, 3, 2.6 * kRadius, 8.0 * kRadius, {0.0, 0.0, -1.5}, 1000);  // the rain, falling
@@ -94,6 +90,16 @@ TEST(RebuildCriterion, ARainOverABedMissesNoContact) {
   sim.add_wall(Wall::plane("left", {-6.0 * kRadius, 0, 0}, {1, 0, 0}, wall_law));
   sim.add_wall(Wall::plane("right", {6.0 * kRadius, 0, 0}, {-1, 0, 0}, wall_law));
   sim.set_gravity(Vec3{0.0, 0.0, -9.81 * 50.0});
+  return sim;
+}
+
+}  // namespace
+
+// The pour: a rain at 1.5 m/s (and gravity) onto a bed resting on the floor. The rain moves as
+// one, so the lists are rebuilt about once per skin it falls; the beads land, bounce and push
+// the bed into the side walls, and no contact is missed.
+TEST(RebuildCriterion, ARainOverABedMissesNoContact) {
+  Simulation sim = rain_over_a_bed();
   const std::size_t touching = step_checking_lists(sim, 3000, "rain over a bed");
   EXPECT_GT(touching, 3000u) << "the rain never reached the bed";
   EXPECT_GT(sim.stats().rebuilds, 5);
@@ -221,19 +227,7 @@ TEST(RebuildCriterion, ASkinChangeTakesEffectAtTheNextBuild) {
 // and bounces (and the other way round): no contact missed at any step across either change, and
 // the larger skin rebuilds less often over the same fall.
 TEST(RebuildCriterion, ARainMissesNoContactAcrossSkinChanges) {
-  auto rain = [] {
-    Particles p;
-    add_layers(p, 6, 2, 2.0 * kRadius, kRadius, {}, 1);
-    add_layers(p, 5, 3, 2.6 * kRadius, 8.0 * kRadius, {0.0, 0.0, -1.5}, 1000);
-    Simulation sim(std::move(p), frictional_rolling_law(), settings_in(0.02));
-    const ContactLaw wall_law = frictional_rolling_law();
-    sim.add_wall(Wall::plane("floor", {0, 0, 0}, {0, 0, 1}, wall_law));
-    sim.add_wall(Wall::plane("left", {-6.0 * kRadius, 0, 0}, {1, 0, 0}, wall_law));
-    sim.add_wall(Wall::plane("right", {6.0 * kRadius, 0, 0}, {-1, 0, 0}, wall_law));
-    sim.set_gravity(Vec3{0.0, 0.0, -9.81 * 50.0});
-    return sim;
-  };
-  Simulation large_first = rain();
+  Simulation large_first = rain_over_a_bed();
   large_first.set_skin(4.0 * kSkin);
   std::size_t touching = step_checking_lists(large_first, 800, "a rain, large skin");
   const std::int64_t large_rebuilds = large_first.stats().rebuilds;
@@ -241,7 +235,7 @@ TEST(RebuildCriterion, ARainMissesNoContactAcrossSkinChanges) {
   touching += step_checking_lists(large_first, 2200, "a rain, after the change to the small skin");
   EXPECT_GT(touching, 3000u) << "the rain never reached the bed";
 
-  Simulation small_first = rain();
+  Simulation small_first = rain_over_a_bed();
   step_checking_lists(small_first, 800, "a rain, small skin");
   EXPECT_LT(2 * large_rebuilds, small_first.stats().rebuilds) << "a skin 4x as large rebuilt as often";
   small_first.set_skin(4.0 * kSkin);
