@@ -28,14 +28,14 @@ struct FilledHoles {
 FilledHoles fill_interior_holes(const FilteredMesh& mesh, const std::vector<double>& kept_values);
 
 // The same for a grid field in the x-z plane of a specimen (a stored field_history.h5 layer, which
-// samples the kept triangles: a node that no kept triangle covered is NaN). Empty space is what can
-// be reached through NaN nodes (4-neighbours) from the grid's top or bottom row: above the free
-// surface, a crater open to it, below the base beside a lowered trapdoor; only through nodes strictly
-// between the box's side walls (x in (wall_left, wall_right), m): on and beyond them is not the
-// specimen's space, and a NaN node beside a wall (where no triangle reached it) is inside. Each NaN
-// node inside gets the mean of its finite 4-neighbours, layer by layer from the finite nodes inward;
-// empty space and the nodes on and beyond the walls stay NaN. A display aid. `filled` (optional) receives the number of
-// nodes filled.
+// samples the kept triangles: a node that no kept triangle covered is NaN). Empty space is what
+// can be reached through NaN nodes (4-neighbours) from the grid's top or bottom row: above the
+// free surface, a crater open to it, below the base beside a lowered trapdoor; only through nodes
+// strictly between the box's side walls (x in (wall_left, wall_right), m): on and beyond them is
+// not the specimen's space, and a NaN node beside a wall (where no triangle reached it) is inside.
+// Each NaN node inside gets the mean of its finite 4-neighbours, layer by layer from the finite
+// nodes inward; empty space and the nodes on and beyond the walls stay NaN. A display aid.
+// `filled` (optional) receives the number of nodes filled.
 GridField fill_interior_grid_holes(const GridField& field, double wall_left, double wall_right,
                                    std::size_t* filled = nullptr);
 

@@ -78,8 +78,8 @@ void describe_run(RunLog& recorder, const ExperimentConfig& c, const fs::path& o
                              "diameter = {:.2g}; RF3 at 50 kPa: phi'_cs 31.5 deg at 3.9e-4, 24.0 at 2.7e-3, 36.8 at 7.5e-5; "
                              "docs/element.md): state its element-test strength at this step, or use elastic_plastic",
                              c.time_step() / c.material.sizes.mean_diameter()));
-  const std::string pour_skin =
-      c.packing.particles || c.pour_skin() == c.skin() ? "" : fmt::format(" ({:.3g} mm while pouring)", c.pour_skin() * 1e3);
+  const bool own_pour_skin = !c.packing.particles && c.pour_skin() != c.skin();
+  const std::string pour_skin = own_pour_skin ? fmt::format(" ({:.3g} mm while pouring)", c.pour_skin() * 1e3) : "";
   recorder.say(fmt::format("  time step {:.4g} s ({:.3g} of the critical {:.4g} s), skin {:.3g} mm{}, {} g, {}",
                            c.time_step(), c.time_step() / c.critical_time_step(), c.critical_time_step(),
                            c.skin() * 1e3, pour_skin, c.spin_up.g_level, threads_text(omp_get_max_threads())));
