@@ -16,6 +16,39 @@ namespace {
 
 constexpr std::size_t kNone = static_cast<std::size_t>(-1);
 
+// Each pending element takes the mean of its neighbours that have a finite value, layer by layer
+// from the valued ones inward: a layer's elements read only values set before that layer, so the
+// result does not depend on the order. for_each_neighbour(k, f) calls f(m) for each neighbour m
+// of k. Returns how many got a value; an element whose region holds no value stays NaN.
+template <class ForEachNeighbour>
+std::size_t fill_layer_by_layer(std::vector<double>& value, std::vector<std::size_t> pending,
+                                ForEachNeighbour&& for_each_neighbour) {
+  std::size_t filled = 0;
+  while (!pending.empty()) {
+    std::vector<std::pair<std::size_t, double>> layer;
+    std::vector<std::size_t> still;
+    for (const std::size_t k : pending) {
+      double sum = 0.0;
+      int count = 0;
+      for_each_neighbour(k, [&](std::size_t m) {
+        if (std::isfinite(value[m])) {
+          sum += value[m];
+          ++count;
+        }
+      });
+      if (count > 0)
+        layer.emplace_back(k, sum / count);
+      else
+        still.push_back(k);
+    }
+    if (layer.empty()) break;  // only elements without any valued neighbour left: they stay empty
+    for (const auto& [k, v] : layer) value[k] = v;
+    filled += layer.size();
+    pending = std::move(still);
+  }
+  return filled;
+}
+
 // The triangles on each side of every edge, kept ones numbered 0..K-1 and dropped ones K..K+D-1.
 struct EdgeNeighbours {
   // across[t][e]: the triangle across edge e of triangle t (kNone on the outer boundary).
@@ -79,26 +112,10 @@ FilledHoles fill_interior_holes(const FilteredMesh& mesh, const std::vector<doub
   std::vector<std::size_t> pending;
   for (std::size_t t = kept; t < kept + dropped; ++t)
     if (!outside[t]) pending.push_back(t);
-  while (!pending.empty()) {
-    std::vector<std::pair<std::size_t, double>> layer;
-    std::vector<std::size_t> still;
-    for (const std::size_t t : pending) {
-      double sum = 0.0;
-      int count = 0;
-      for (const std::size_t other : n.across[t])
-        if (other != kNone && std::isfinite(value[other])) {
-          sum += value[other];
-          ++count;
-        }
-      if (count > 0)
-        layer.emplace_back(t, sum / count);
-      else
-        still.push_back(t);
-    }
-    if (layer.empty()) break;  // only triangles without any valued neighbour left: they stay empty
-    for (const auto& [t, v] : layer) value[t] = v;
-    pending = std::move(still);
-  }
+  fill_layer_by_layer(value, std::move(pending), [&](std::size_t t, auto&& each) {
+    for (const std::size_t other : n.across[t])
+      if (other != kNone) each(other);
+  });
 
   FilledHoles filled;
   for (std::size_t t = kept; t < kept + dropped; ++t) {
@@ -152,34 +169,11 @@ GridField fill_interior_grid_holes(const GridField& field, double wall_left, dou
     stack.pop_back();
     neighbours(k, visit);
   }
-  // The holes, layer by layer: a layer's nodes take the mean of the neighbours that had a value
-  // before it (finite, or filled in an earlier layer), so the result does not depend on the order.
+  // The holes, filled layer by layer from the nodes with values inward.
   std::vector<std::size_t> hole;
   for (std::size_t k = 0; k < v.size(); ++k)
     if (missing(k) && !outside[k] && in_box(k)) hole.push_back(k);
-  std::size_t count = 0;
-  while (!hole.empty()) {
-    std::vector<std::pair<std::size_t, double>> layer;
-    std::vector<std::size_t> rest;
-    for (const std::size_t k : hole) {
-      double sum = 0.0;
-      int n = 0;
-      neighbours(k, [&](std::size_t m) {
-        if (!missing(m)) {
-          sum += v[m];
-          ++n;
-        }
-      });
-      if (n > 0)
-        layer.emplace_back(k, sum / n);
-      else
-        rest.push_back(k);
-    }
-    if (layer.empty()) break;  // cannot happen: every hole (a NaN region not open to empty space) touches a value
-    for (const auto& [k, value] : layer) v[k] = value;
-    count += layer.size();
-    hole = std::move(rest);
-  }
+  const std::size_t count = fill_layer_by_layer(v, std::move(hole), neighbours);
   if (filled) *filled = count;
   return out;
 }
